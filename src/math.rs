@@ -1,0 +1,153 @@
+//! Geometric vocabulary shared by every stage: vectors, points, rays and boxes.
+
+use nalgebra::{Matrix4, Vector3};
+
+/// A direction or offset in 3D (f64: Newton iteration and ray offsets need it).
+pub type Vec3 = Vector3<f64>;
+/// A position in 3D. Kept as a vector type so that the arithmetic stays simple.
+pub type Point3 = Vector3<f64>;
+/// A homogeneous 4x4 transform.
+pub type Matrix = Matrix4<f64>;
+
+/// A ray `origin + t * direction` at a time within the shutter interval `[0, 1]`.
+/// `direction` is not necessarily unit length (object-space rays are not).
+#[derive(Clone, Copy, Debug)]
+pub struct Ray {
+    pub origin: Point3,
+    pub direction: Vec3,
+    pub time: f64,
+}
+
+impl Ray {
+    pub fn new(origin: Point3, direction: Vec3, time: f64) -> Self {
+        Ray {
+            origin,
+            direction,
+            time,
+        }
+    }
+
+    pub fn at(&self, t: f64) -> Point3 {
+        self.origin + self.direction * t
+    }
+}
+
+/// An axis-aligned bounding box. The empty box has `min > max`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Aabb {
+    pub min: Point3,
+    pub max: Point3,
+}
+
+impl Aabb {
+    pub fn empty() -> Self {
+        Aabb {
+            min: Vec3::repeat(f64::INFINITY),
+            max: Vec3::repeat(f64::NEG_INFINITY),
+        }
+    }
+
+    pub fn from_point(p: Point3) -> Self {
+        Aabb { min: p, max: p }
+    }
+
+    pub fn include_point(&self, p: Point3) -> Self {
+        Aabb {
+            min: self.min.inf(&p),
+            max: self.max.sup(&p),
+        }
+    }
+
+    pub fn union(&self, other: &Aabb) -> Self {
+        Aabb {
+            min: self.min.inf(&other.min),
+            max: self.max.sup(&other.max),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.min.x > self.max.x || self.min.y > self.max.y || self.min.z > self.max.z
+    }
+
+    pub fn centroid(&self) -> Point3 {
+        (self.min + self.max) * 0.5
+    }
+
+    pub fn extent(&self) -> Vec3 {
+        self.max - self.min
+    }
+
+    pub fn surface_area(&self) -> f64 {
+        if self.is_empty() {
+            return 0.0;
+        }
+        let e = self.extent();
+        2.0 * (e.x * e.y + e.y * e.z + e.z * e.x)
+    }
+
+    /// The box that holds this box after an affine transform (all 8 corners).
+    pub fn transformed(&self, matrix: &Matrix) -> Self {
+        let mut out = Aabb::empty();
+        for i in 0..8 {
+            let corner = Vec3::new(
+                if i & 1 == 0 { self.min.x } else { self.max.x },
+                if i & 2 == 0 { self.min.y } else { self.max.y },
+                if i & 4 == 0 { self.min.z } else { self.max.z },
+            );
+            out = out.include_point(transform_point(matrix, &corner));
+        }
+        out
+    }
+
+    /// Slab test: the entry distance if the ray meets the box within `(t_min, t_max)`.
+    /// `inverse_direction` is `1 / ray.direction` per component.
+    #[inline]
+    pub fn hit_distance(
+        &self,
+        origin: &Point3,
+        inverse_direction: &Vec3,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<f64> {
+        let mut near = t_min;
+        let mut far = t_max;
+        for axis in 0..3 {
+            let t0 = (self.min[axis] - origin[axis]) * inverse_direction[axis];
+            let t1 = (self.max[axis] - origin[axis]) * inverse_direction[axis];
+            let (lo, hi) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
+            // NaN (0 * inf) comparisons fall through and keep the previous bound.
+            if lo > near {
+                near = lo;
+            }
+            if hi < far {
+                far = hi;
+            }
+        }
+        if near <= far { Some(near) } else { None }
+    }
+}
+
+/// Applies the affine part of `matrix` to a point.
+#[inline]
+pub fn transform_point(matrix: &Matrix, p: &Point3) -> Point3 {
+    matrix.fixed_view::<3, 3>(0, 0) * p + matrix.fixed_view::<3, 1>(0, 3)
+}
+
+/// Applies the linear part of `matrix` to a direction.
+#[inline]
+pub fn transform_vector(matrix: &Matrix, v: &Vec3) -> Vec3 {
+    matrix.fixed_view::<3, 3>(0, 0) * v
+}
+
+/// Two unit vectors completing `n` to a right-handed orthonormal frame
+/// (Duff et al., "Building an Orthonormal Basis, Revisited", 2017).
+#[inline]
+pub fn orthonormal_basis(n: &Vec3) -> (Vec3, Vec3) {
+    let sign = 1.0_f64.copysign(n.z);
+    let a = -1.0 / (sign + n.z);
+    let b = n.x * n.y * a;
+    (
+        Vec3::new(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x),
+        Vec3::new(b, sign + n.y * n.y * a, -n.y),
+    )
+}

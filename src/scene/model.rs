@@ -1,0 +1,286 @@
+//! The built scene: what the build stage produces and the renderer consumes.
+//!
+//! Every dialect is normalised into this one model. Positions are in world units,
+//! colours are linear, materials are referred to by index.
+
+use std::sync::Arc;
+
+use crate::color::Color;
+use crate::math::{Matrix, Point3, Vec3};
+use crate::scene::error::Diagnostic;
+use crate::texture::Texture;
+
+/// A fully built scene.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    pub camera: CameraDesc,
+    /// Radiance of camera rays that miss everything.
+    pub background: Color,
+    pub materials: Vec<Material>,
+    /// Images referred to by materials (`Material::texture`, `Material::normal_map`).
+    pub textures: Vec<Arc<Texture>>,
+    pub lights: Vec<Light>,
+    /// The object tree: groups and transforms over shapes.
+    pub root: Object,
+    pub dialect: Dialect,
+    /// Non-fatal problems found while reading (unknown fields, count mismatches...).
+    pub warnings: Vec<Diagnostic>,
+    /// Features that the file uses but the renderer does not implement yet.
+    pub unsupported: Vec<String>,
+}
+
+/// Which family of the PA grammar a file was written in (see docs/scene-format.md).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dialect {
+    /// The project's own grammar (diffusionRate / specularRate / refractRate).
+    Canonical,
+    /// The unmodified course framework (diffuseColor / specularColor / shininess).
+    Pa1,
+    /// `type d s r`, `refr` as IOR, `emission`, DiskLights (jms, alz, wso, ylc, ...).
+    TypeVector,
+    /// Material kinds with `attenuation`; specularColor is emission (shu, cui, re2).
+    Rtiow,
+    /// `prop` presets (tsc).
+    Prop,
+    /// rub.
+    Rub,
+    /// `type 0/1/2`, `Energy` (afb).
+    SmallptInt,
+    /// cyf.
+    Cyf,
+    /// dst.
+    Dst,
+    /// cav.
+    Cav,
+    /// jef (`reflective`, `transmissive`).
+    Jef,
+    /// yao (`emissionColor`, `diff`/`refl`/`refr` weights).
+    Yao,
+    /// cyy.
+    Cyy,
+    /// piu.
+    Piu,
+    /// bow.
+    Bow,
+    /// The Cambrian coursework renderer (`type DIFF|SPEC|REFR`, `refractive_rate`).
+    Cambrian,
+}
+
+impl Dialect {
+    pub const ALL: [Dialect; 16] = [
+        Dialect::Canonical,
+        Dialect::Pa1,
+        Dialect::TypeVector,
+        Dialect::Rtiow,
+        Dialect::Prop,
+        Dialect::Rub,
+        Dialect::SmallptInt,
+        Dialect::Cyf,
+        Dialect::Dst,
+        Dialect::Cav,
+        Dialect::Jef,
+        Dialect::Yao,
+        Dialect::Cyy,
+        Dialect::Piu,
+        Dialect::Bow,
+        Dialect::Cambrian,
+    ];
+
+    pub fn name(&self) -> &'static str {
+        match self {
+            Dialect::Canonical => "canonical",
+            Dialect::Pa1 => "pa1",
+            Dialect::TypeVector => "type-vector",
+            Dialect::Rtiow => "rtiow",
+            Dialect::Prop => "prop",
+            Dialect::Rub => "rub",
+            Dialect::SmallptInt => "smallpt-int",
+            Dialect::Cyf => "cyf",
+            Dialect::Dst => "dst",
+            Dialect::Cav => "cav",
+            Dialect::Jef => "jef",
+            Dialect::Yao => "yao",
+            Dialect::Cyy => "cyy",
+            Dialect::Piu => "piu",
+            Dialect::Bow => "bow",
+            Dialect::Cambrian => "cambrian",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Dialect> {
+        Dialect::ALL.iter().copied().find(|d| d.name() == name)
+    }
+}
+
+/// Which image axis an `angle` field of view spans.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FovAxis {
+    Vertical,
+    Horizontal,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct CameraDesc {
+    pub center: Point3,
+    /// Not necessarily normalised; the camera normalises it.
+    pub direction: Vec3,
+    pub up: Vec3,
+    pub width: u32,
+    pub height: u32,
+    /// Field of view in degrees and the axis it spans; `None`: the original's
+    /// fixed 0.5135 image-plane scale (28.8 degrees vertical).
+    pub fov: Option<(f64, FovAxis)>,
+    /// Rays start this far along the primary direction (default 0).
+    pub canvas_distance: f64,
+    /// Distance of the plane in focus (only used with a lens).
+    pub focus_distance: f64,
+    /// Lens radius; depth of field is on when it is at least 1e-4.
+    pub lens_radius: f64,
+}
+
+/// One normalised material. `diffuse + specular + refract == 1` after building.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    pub color: Color,
+    pub emission: Color,
+    pub diffuse: f64,
+    pub specular: f64,
+    pub refract: f64,
+    pub ior: f64,
+    /// Index into `Scene::textures`.
+    pub texture: Option<usize>,
+    /// Index into `Scene::textures`: a tangent-space normal map.
+    pub normal_map: Option<usize>,
+    /// Glossiness of the specular lobe (0 = perfect mirror). Parsed; not rendered yet.
+    pub roughness: f64,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Material {
+            color: Color::WHITE,
+            emission: Color::BLACK,
+            diffuse: 1.0,
+            specular: 0.0,
+            refract: 0.0,
+            ior: 1.5,
+            texture: None,
+            normal_map: None,
+            roughness: 0.0,
+        }
+    }
+}
+
+/// Lights of the PA1 and coursework dialects (besides emissive materials).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Light {
+    /// Radiant intensity `color` from a point.
+    Point { position: Point3, color: Color },
+    /// Irradiance `color` arriving along `direction`.
+    Directional { direction: Vec3, color: Color },
+    /// A one-sided disk emitting radiance `color` towards `normal`.
+    Disk {
+        center: Point3,
+        normal: Vec3,
+        radius: f64,
+        color: Color,
+    },
+    /// A parallelogram `corner + s*edge_u + t*edge_v` emitting radiance `color`.
+    Area {
+        corner: Point3,
+        edge_u: Vec3,
+        edge_v: Vec3,
+        color: Color,
+    },
+}
+
+/// Profile curve of a surface of revolution, in the xy plane, swept about y.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Profile {
+    pub kind: CurveKind,
+    /// Control points (x, y); z of the file is dropped.
+    pub controls: Vec<[f64; 2]>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CurveKind {
+    /// One Bezier curve of degree `controls.len() - 1`.
+    Bezier,
+    /// A uniform cubic B-spline (clamped to the range where it is defined).
+    Bspline,
+}
+
+/// Triangle mesh data as loaded from an OBJ file (object space).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MeshData {
+    pub positions: Vec<Point3>,
+    /// Per-vertex normals (same length as `positions`) when the file has them.
+    pub normals: Option<Vec<Vec3>>,
+    /// Per-vertex texture coordinates when the file has them.
+    pub uvs: Option<Vec<[f64; 2]>>,
+    pub triangles: Vec<[u32; 3]>,
+}
+
+/// A node of the object tree.
+#[derive(Clone, Debug)]
+pub enum Object {
+    Group(Vec<Object>),
+    Transform {
+        /// Object to world.
+        matrix: Matrix,
+        /// World to object.
+        inverse: Matrix,
+        child: Box<Object>,
+    },
+    Sphere {
+        center: Point3,
+        radius: f64,
+        /// Displacement of the centre over the whole shutter interval (motion blur).
+        motion: Vec3,
+        material: usize,
+    },
+    /// Points `p` with `normal . p = offset`.
+    Plane {
+        normal: Vec3,
+        offset: f64,
+        material: usize,
+    },
+    Triangle {
+        vertices: [Point3; 3],
+        material: usize,
+    },
+    /// The parallelogram `origin + s*edge_u + t*edge_v`, s and t in [0, 1].
+    Rectangle {
+        origin: Point3,
+        edge_u: Vec3,
+        edge_v: Vec3,
+        material: usize,
+    },
+    Disk {
+        center: Point3,
+        normal: Vec3,
+        radius: f64,
+        material: usize,
+    },
+    Mesh {
+        mesh: Arc<MeshData>,
+        /// Interpolate the OBJ's vertex normals (when it has them).
+        smooth: bool,
+        material: usize,
+    },
+    Revolution {
+        profile: Profile,
+        material: usize,
+    },
+}
+
+impl Object {
+    /// Calls `visit` on every leaf (non-group, non-transform) node.
+    pub fn for_each_leaf(&self, visit: &mut impl FnMut(&Object)) {
+        match self {
+            Object::Group(children) => children.iter().for_each(|c| c.for_each_leaf(visit)),
+            Object::Transform { child, .. } => child.for_each_leaf(visit),
+            leaf => visit(leaf),
+        }
+    }
+}

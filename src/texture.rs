@@ -1,0 +1,81 @@
+//! Images used as colour textures and normal maps, with nearest-texel lookup.
+
+use crate::color::Color;
+
+/// A decoded image in linear [0, 1] values (no gamma conversion, as the original).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Texture {
+    pub width: usize,
+    pub height: usize,
+    /// Row-major, row 0 at the top of the image.
+    pub texels: Vec<[f32; 3]>,
+}
+
+impl Texture {
+    /// Nearest texel at (u, v) in [0, 1], v = 0 at the bottom (the original's
+    /// `i = floor(u*W)`, `j = floor((1-v)*H)`, clamped).
+    pub fn lookup(&self, u: f64, v: f64) -> Color {
+        let i = clamp_index(u * self.width as f64, self.width);
+        let j = clamp_index((1.0 - v) * self.height as f64, self.height);
+        self.texel(i, j)
+    }
+
+    /// Nearest texel with wrap-around, for tiled textures (coordinates in texels).
+    pub fn lookup_tiled(&self, x: f64, y: f64) -> Color {
+        let i = wrap_index(x, self.width);
+        let j = wrap_index(-y, self.height);
+        self.texel(i, j)
+    }
+
+    fn texel(&self, i: usize, j: usize) -> Color {
+        match self.texels.get(j * self.width + i) {
+            Some(t) => Color::new(t[0] as f64, t[1] as f64, t[2] as f64),
+            None => Color::BLACK,
+        }
+    }
+}
+
+fn clamp_index(x: f64, size: usize) -> usize {
+    if size == 0 || x.is_nan() || x < 0.0 {
+        return 0;
+    }
+    (x as usize).min(size - 1)
+}
+
+fn wrap_index(x: f64, size: usize) -> usize {
+    if size == 0 || !x.is_finite() {
+        return 0;
+    }
+    let i = x.floor().rem_euclid(size as f64) as usize;
+    i.min(size - 1)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn checker() -> Texture {
+        // 2x2: top row red, green; bottom row blue, white.
+        Texture {
+            width: 2,
+            height: 2,
+            texels: vec![[1., 0., 0.], [0., 1., 0.], [0., 0., 1.], [1., 1., 1.]],
+        }
+    }
+
+    #[test]
+    fn lookup_has_v_up() {
+        let t = checker();
+        assert_eq!(t.lookup(0.1, 0.9), Color::new(1., 0., 0.));
+        assert_eq!(t.lookup(0.9, 0.1), Color::new(1., 1., 1.));
+        assert_eq!(t.lookup(-5.0, 7.0), Color::new(1., 0., 0.));
+        assert_eq!(t.lookup(f64::NAN, 0.5), t.lookup(0.0, 0.5));
+    }
+
+    #[test]
+    fn tiled_lookup_wraps() {
+        let t = checker();
+        assert_eq!(t.lookup_tiled(0.5, -0.5), t.lookup_tiled(2.5, -2.5));
+        assert_eq!(t.lookup_tiled(-1.5, 0.5), t.lookup_tiled(0.5, 0.5));
+    }
+}
