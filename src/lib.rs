@@ -3,12 +3,19 @@
 //!
 //! Data flows one way:
 //! scene text -> syntax tree -> built [`scene::model::Scene`] -> [`world::World`]
-//! -> camera rays -> integrator samples -> film -> image file.
+//! -> [`camera::Camera`] rays -> [`integrator`] samples -> [`film`] ->
+//! [`image_io`] file. [`render::render`] is the only parallel code.
 
+pub mod camera;
 pub mod color;
+pub mod film;
 pub mod image_io;
+pub mod integrator;
 pub mod math;
+pub mod render;
 pub mod rng;
+pub mod sampling;
 pub mod scene;
+pub mod shading;
 pub mod texture;
 pub mod world;

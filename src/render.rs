@@ -1,0 +1,165 @@
+//! The only parallel code: rows of the film rendered by rayon, every pixel
+//! sample with its own generator seeded from (pixel, sample index, seed).
+
+use std::io::IsTerminal;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+use rayon::prelude::*;
+
+use crate::camera::Camera;
+use crate::film::{PixelSum, to_image};
+use crate::image_io::Image;
+use crate::integrator::{Integrator, SceneView};
+use crate::rng::Rng;
+use crate::scene::model::{Object, Scene};
+use crate::world::World;
+
+#[derive(Clone, Debug)]
+pub struct RenderSettings {
+    pub width: u32,
+    pub height: u32,
+    /// Samples per pixel in total, spread over the 2x2 sub-pixels in turn.
+    pub spp: u32,
+    pub seed: u64,
+    /// Worker threads; `None`: one per core.
+    pub threads: Option<usize>,
+    pub integrator: Integrator,
+    /// Print a progress line with an ETA (only on a terminal).
+    pub progress: bool,
+}
+
+/// What a render did.
+#[derive(Clone, Debug, Default)]
+pub struct RenderStats {
+    pub seconds: f64,
+    /// Samples that contributed to the image.
+    pub samples: u64,
+    /// NaN or infinite samples that were dropped.
+    pub dropped: u64,
+}
+
+impl RenderStats {
+    pub fn samples_per_second(&self) -> f64 {
+        self.samples as f64 / self.seconds.max(1e-9)
+    }
+}
+
+/// Renders `scene` (whose geometry is `world`) into a linear image.
+pub fn render(
+    scene: &Scene,
+    world: &World,
+    settings: &RenderSettings,
+) -> Result<(Image, RenderStats), String> {
+    let width = settings.width.max(1) as usize;
+    let height = settings.height.max(1) as usize;
+    let camera = Camera::new(&scene.camera, width as u32, height as u32);
+    let view = SceneView::new(scene, world);
+    let uses_time = has_motion(&scene.root);
+    let mut film = vec![PixelSum::default(); width * height];
+    let rows_done = AtomicUsize::new(0);
+    let start = Instant::now();
+    let mut builder = rayon::ThreadPoolBuilder::new();
+    if let Some(threads) = settings.threads {
+        builder = builder.num_threads(threads.max(1));
+    }
+    let pool = builder
+        .build()
+        .map_err(|e| format!("cannot start worker threads: {e}"))?;
+    let show_progress = settings.progress && std::io::stderr().is_terminal();
+    std::thread::scope(|scope| {
+        if show_progress {
+            scope.spawn(|| report_progress(&rows_done, height, start));
+        }
+        pool.install(|| {
+            film.par_chunks_mut(width)
+                .enumerate()
+                .for_each(|(row, pixels)| {
+                    let y = height - 1 - row;
+                    for (x, pixel) in pixels.iter_mut().enumerate() {
+                        let pixel_index = (row * width + x) as u64;
+                        for sample in 0..settings.spp {
+                            let mut rng = Rng::for_sample(pixel_index, sample as u64, settings.seed);
+                            let sub = sample % 4;
+                            let film_x = x as f64 + (0.5 + (sub % 2) as f64 + tent(rng.next_f64())) * 0.5;
+                            let film_y = y as f64 + (0.5 + (sub / 2) as f64 + tent(rng.next_f64())) * 0.5;
+                            let lens = if camera.has_lens() {
+                                [rng.next_f64(), rng.next_f64()]
+                            } else {
+                                [0.5, 0.5]
+                            };
+                            let time = if uses_time { rng.next_f64() } else { 0.0 };
+                            let ray = camera.ray(film_x, film_y, lens, time);
+                            pixel.add(settings.integrator.radiance(&view, ray, &mut rng));
+                        }
+                    }
+                    rows_done.fetch_add(1, Ordering::Relaxed);
+                });
+        });
+    });
+    if show_progress {
+        eprintln!();
+    }
+    let stats = RenderStats {
+        seconds: start.elapsed().as_secs_f64(),
+        samples: film.iter().map(|p| p.samples as u64).sum(),
+        dropped: film.iter().map(|p| p.dropped as u64).sum(),
+    };
+    Ok((to_image(width, height, &film), stats))
+}
+
+/// smallpt's tent filter: maps a uniform number in [0, 1) to an offset in
+/// (-1, 1) with a triangular density.
+pub fn tent(u: f64) -> f64 {
+    let r = 2.0 * u;
+    if r < 1.0 { r.sqrt() - 1.0 } else { 1.0 - (2.0 - r).sqrt() }
+}
+
+fn has_motion(root: &Object) -> bool {
+    let mut moving = false;
+    root.for_each_leaf(&mut |leaf| {
+        if let Object::Sphere { motion, .. } = leaf {
+            moving |= motion.norm_squared() > 0.0;
+        }
+    });
+    moving
+}
+
+fn report_progress(rows_done: &AtomicUsize, rows: usize, start: Instant) {
+    loop {
+        let done = rows_done.load(Ordering::Relaxed);
+        let elapsed = start.elapsed().as_secs_f64();
+        let fraction = done as f64 / rows as f64;
+        let eta = if done > 0 {
+            format!("{:.0} s left", elapsed / fraction - elapsed)
+        } else {
+            "estimating".to_string()
+        };
+        eprint!("\rrendering {:5.1}%  {elapsed:.0} s  {eta}    ", fraction * 100.0);
+        if done >= rows {
+            return;
+        }
+        std::thread::sleep(Duration::from_millis(250));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tent_is_triangular_on_minus_one_to_one() {
+        let n = 100_000;
+        let mut near_zero = 0;
+        for i in 0..n {
+            let d = tent((i as f64 + 0.5) / n as f64);
+            assert!(d > -1.0 && d < 1.0);
+            if d.abs() < 0.5 {
+                near_zero += 1;
+            }
+        }
+        // A triangle on (-1, 1) puts 3/4 of its mass within 1/2 of the centre.
+        let fraction = near_zero as f64 / n as f64;
+        assert!((fraction - 0.75).abs() < 0.001, "{fraction}");
+    }
+}

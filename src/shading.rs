@@ -1,0 +1,98 @@
+//! What a surface hit means for light transport: the material, its colour
+//! (texture or constant), and normals oriented towards the incoming ray.
+
+use crate::color::Color;
+use crate::math::{Point3, Ray, Vec3};
+use crate::scene::model::{Material, Scene};
+use crate::world::{UvMapping, WorldHit};
+
+/// A hit seen from the ray that found it.
+pub struct Shading<'a> {
+    pub point: Point3,
+    pub material: &'a Material,
+    /// Texture colour where the material has a texture, else its colour.
+    pub color: Color,
+    /// Unit geometric normal on the side the ray came from.
+    pub geometric: Vec3,
+    /// Unit shading normal (interpolated, normal-mapped) on that same side.
+    pub normal: Vec3,
+    /// Whether the ray arrived from the outside (the side the geometric normal
+    /// points to): decides entering or leaving glass for every shape.
+    pub entering: bool,
+}
+
+impl<'a> Shading<'a> {
+    pub fn new(scene: &'a Scene, hit: &WorldHit, ray: &Ray) -> Shading<'a> {
+        let material = scene
+            .materials
+            .get(hit.material)
+            .unwrap_or(&FALLBACK_MATERIAL);
+        let entering = hit.geometric_normal.dot(&ray.direction) < 0.0;
+        let geometric = if entering {
+            hit.geometric_normal
+        } else {
+            -hit.geometric_normal
+        };
+        let mut normal = match material.normal_map.and_then(|i| scene.textures.get(i)) {
+            Some(map) => perturb(hit, map.lookup(hit.uv[0], hit.uv[1])),
+            None => hit.shading_normal,
+        };
+        if normal.dot(&geometric) < 0.0 {
+            normal = -normal;
+        }
+        let color = match material.texture.and_then(|i| scene.textures.get(i)) {
+            Some(texture) => match hit.uv_mapping {
+                UvMapping::Unit => texture.lookup(hit.uv[0], hit.uv[1]),
+                UvMapping::Tiled => texture.lookup_tiled(hit.uv[0], hit.uv[1]),
+            },
+            None => material.color,
+        };
+        Shading {
+            point: hit.point,
+            material,
+            color,
+            geometric,
+            normal,
+            entering,
+        }
+    }
+
+    /// The origin of a ray leaving this point in `direction`: pushed off the
+    /// surface along the geometric normal, to the side the ray goes to, by an
+    /// amount relative to the point's magnitude (f64 hit points are accurate to
+    /// far better than 1e-7 relative), so that it cannot re-hit the surface.
+    pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
+        let magnitude = self.point.amax().max(1e-6);
+        let offset = self.geometric * (1e-7 * magnitude);
+        if direction.dot(&self.geometric) >= 0.0 {
+            self.point + offset
+        } else {
+            self.point - offset
+        }
+    }
+}
+
+static FALLBACK_MATERIAL: Material = Material {
+    color: Color::WHITE,
+    emission: Color::BLACK,
+    diffuse: 1.0,
+    specular: 0.0,
+    refract: 0.0,
+    ior: 1.5,
+    texture: None,
+    normal_map: None,
+    roughness: 0.0,
+};
+
+/// Tangent-space normal mapping: texel (r, g, b) in [0, 1] is the normal
+/// (2r - 1, 2g - 1, 2b - 1) in the frame (tangent, bitangent, normal).
+fn perturb(hit: &WorldHit, texel: Color) -> Vec3 {
+    let n = hit.shading_normal;
+    let t = (hit.tangent - n * n.dot(&hit.tangent)).try_normalize(1e-12);
+    let Some(t) = t else { return n };
+    let b = n.cross(&t);
+    let local = Vec3::new(2.0 * texel.r - 1.0, 2.0 * texel.g - 1.0, 2.0 * texel.b - 1.0);
+    (t * local.x + b * local.y + n * local.z)
+        .try_normalize(1e-12)
+        .unwrap_or(n)
+}
