@@ -1,7 +1,189 @@
-//! Criterion benchmarks: filled in with the renderer.
-use criterion::{Criterion, criterion_group, criterion_main};
+//! Criterion benchmarks (release build, `make bench`): BVH build on the full
+//! Stanford dragon, incoherent rays through it, ray-sphere and
+//! revolution-surface intersections, and whole renders in samples per second.
 
-fn placeholder(_c: &mut Criterion) {}
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::Duration;
 
-criterion_group!(benches, placeholder);
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use pathtracer::color::Color;
+use pathtracer::integrator::Integrator;
+use pathtracer::math::{Ray, Vec3};
+use pathtracer::render::{RenderSettings, render};
+use pathtracer::rng::Rng;
+use pathtracer::scene::model::{
+    CameraDesc, CurveKind, Dialect, Material, MeshData, Object, Profile, Scene,
+};
+use pathtracer::scene::{LoadOptions, load_scene};
+use pathtracer::world::World;
+
+fn shared(relative: &str) -> Option<PathBuf> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared").join(relative);
+    if path.exists() {
+        Some(path)
+    } else {
+        eprintln!("skipped: ../shared not found ({})", path.display());
+        None
+    }
+}
+
+fn scene_with(root: Object) -> Scene {
+    Scene {
+        camera: CameraDesc {
+            center: Vec3::new(0.0, 0.0, 5.0),
+            direction: Vec3::new(0.0, 0.0, -1.0),
+            up: Vec3::new(0.0, 1.0, 0.0),
+            width: 64,
+            height: 64,
+            fov: None,
+            canvas_distance: 0.0,
+            focus_distance: 1.0,
+            lens_radius: 0.0,
+        },
+        background: Color::BLACK,
+        materials: vec![Material::default()],
+        textures: Vec::new(),
+        lights: Vec::new(),
+        root,
+        dialect: Dialect::Canonical,
+        warnings: Vec::new(),
+        unsupported: Vec::new(),
+    }
+}
+
+fn load_obj(path: &Path) -> MeshData {
+    let options = tobj::LoadOptions {
+        triangulate: true,
+        single_index: true,
+        ..Default::default()
+    };
+    let (models, _) = tobj::load_obj(path, &options).expect("reference mesh loads");
+    let mut mesh = MeshData::default();
+    for model in models {
+        let base = mesh.positions.len() as u32;
+        let m = model.mesh;
+        for p in m.positions.chunks_exact(3) {
+            mesh.positions.push(Vec3::new(p[0] as f64, p[1] as f64, p[2] as f64));
+        }
+        for t in m.indices.chunks_exact(3) {
+            mesh.triangles.push([base + t[0], base + t[1], base + t[2]]);
+        }
+    }
+    mesh
+}
+
+/// Rays from random points on a sphere around the world towards random
+/// points inside its bounds: incoherent, and most of them hit.
+fn incoherent_rays(world: &World, count: usize) -> Vec<Ray> {
+    let bounds = world.bounds();
+    let center = bounds.centroid();
+    let radius = bounds.extent().norm();
+    let mut rng = Rng::new(11, 13);
+    (0..count)
+        .map(|_| {
+            let z = 2.0 * rng.next_f64() - 1.0;
+            let phi = 2.0 * std::f64::consts::PI * rng.next_f64();
+            let s = (1.0 - z * z).sqrt();
+            let origin = center + Vec3::new(s * phi.cos(), s * phi.sin(), z) * radius;
+            let e = bounds.extent();
+            let target = bounds.min
+                + Vec3::new(e.x * rng.next_f64(), e.y * rng.next_f64(), e.z * rng.next_f64());
+            Ray::new(origin, (target - origin).normalize(), 0.0)
+        })
+        .collect()
+}
+
+fn bench_rays(c: &mut Criterion, name: &str, world: &World) {
+    let rays = incoherent_rays(world, 100_000);
+    let mut group = c.benchmark_group("rays");
+    group.throughput(Throughput::Elements(rays.len() as u64));
+    group.bench_function(name, |b| {
+        b.iter(|| {
+            rays.iter()
+                .filter(|r| world.intersect(r, 0.0, f64::INFINITY).is_some())
+                .count()
+        })
+    });
+    group.finish();
+}
+
+fn dragon(c: &mut Criterion) {
+    let Some(path) = shared("reference/meshes/dragon_vrip.obj") else {
+        return;
+    };
+    let mesh = Arc::new(load_obj(&path));
+    let scene = scene_with(Object::Mesh {
+        mesh,
+        smooth: false,
+        material: 0,
+    });
+    let mut group = c.benchmark_group("bvh_build");
+    group.sample_size(10);
+    group.measurement_time(Duration::from_secs(20));
+    group.bench_function("dragon_871k", |b| b.iter(|| World::build(&scene)));
+    group.finish();
+    let world = World::build(&scene);
+    bench_rays(c, "dragon_871k_incoherent", &world);
+}
+
+fn primitives(c: &mut Criterion) {
+    let sphere = scene_with(Object::Sphere {
+        center: Vec3::zeros(),
+        radius: 1.0,
+        motion: Vec3::zeros(),
+        material: 0,
+    });
+    bench_rays(c, "sphere", &World::build(&sphere));
+    let vase = scene_with(Object::Revolution {
+        profile: Profile {
+            kind: CurveKind::Bezier,
+            controls: vec![
+                [0.0, 0.0],
+                [2.2, 0.0],
+                [3.0, 1.5],
+                [1.2, 3.0],
+                [0.8, 4.0],
+                [1.6, 5.0],
+                [2.0, 5.6],
+            ],
+        },
+        material: 0,
+    });
+    bench_rays(c, "revolution_bezier_vase", &World::build(&vase));
+}
+
+fn renders(c: &mut Criterion) {
+    let mut scenes = vec![(
+        "smallpt",
+        PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/testcases/smallpt.txt")),
+    )];
+    if let Some(path) = shared("scenes/report_scene11_dragons.txt") {
+        scenes.push(("dragons", path));
+    }
+    let mut group = c.benchmark_group("render_samples");
+    group.sample_size(10);
+    group.measurement_time(Duration::from_secs(20));
+    for (name, path) in scenes {
+        let scene = load_scene(&path, &LoadOptions::default()).expect("bench scene loads");
+        let world = World::build(&scene);
+        let settings = RenderSettings {
+            width: 128,
+            height: 96,
+            spp: 16,
+            seed: 0,
+            threads: None,
+            integrator: Integrator::Original,
+            progress: false,
+        };
+        let samples = settings.width as u64 * settings.height as u64 * settings.spp as u64;
+        group.throughput(Throughput::Elements(samples));
+        group.bench_with_input(BenchmarkId::from_parameter(name), &settings, |b, s| {
+            b.iter(|| render(&scene, &world, s).expect("renders"))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, primitives, dragon, renders);
 criterion_main!(benches);

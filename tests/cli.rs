@@ -1,0 +1,122 @@
+//! The command line as a user meets it: determinism, exit codes, error
+//! messages with positions, and no half-written or clobbered outputs.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn pathtracer(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_pathtracer"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the binary runs")
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("pathtracer-cli-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
+
+fn render_smallpt(out: &Path, threads: &str, seed: &str) -> Output {
+    pathtracer(&[
+        "render",
+        "testcases/smallpt.txt",
+        "-o",
+        out.to_str().unwrap(),
+        "--width",
+        "40",
+        "--height",
+        "30",
+        "--spp",
+        "8",
+        "--threads",
+        threads,
+        "--seed",
+        seed,
+        "--quiet",
+    ])
+}
+
+#[test]
+fn same_seed_gives_identical_bytes_for_one_and_two_threads() {
+    let dir = temp_dir("determinism");
+    let one = dir.join("one.bmp");
+    let two = dir.join("two.bmp");
+    let other_seed = dir.join("other.bmp");
+    for (path, threads, seed) in [(&one, "1", "5"), (&two, "2", "5"), (&other_seed, "2", "6")] {
+        let out = render_smallpt(path, threads, seed);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    }
+    let a = std::fs::read(&one).unwrap();
+    let b = std::fs::read(&two).unwrap();
+    let c = std::fs::read(&other_seed).unwrap();
+    assert_eq!(a.len(), 54 + 40 * 30 * 3, "a 24-bit BMP of 40x30");
+    assert!(a == b, "1 and 2 threads differ");
+    assert!(a != c, "another seed gives the same image");
+    // The image is not black: the light and the walls are visible.
+    assert!(a[54..].iter().any(|&v| v > 100));
+}
+
+#[test]
+fn a_syntax_error_names_file_line_and_column_and_writes_nothing() {
+    let dir = temp_dir("syntax");
+    let scene = dir.join("broken.txt");
+    std::fs::write(
+        &scene,
+        "PerspectiveCamera {\n  center 0 0 10\n  direction 0 0 -1\n  up 0 1 0\n  width 8\n  height 8\n}\nMaterials { numMaterials 1 Material { color 1 1 1 } }\nGroup {\n  numObjects 1\n  MaterialIndex 0\n  Sphere { center 0 0 0 radius }\n}\n",
+    )
+    .unwrap();
+    let image = dir.join("out.bmp");
+    std::fs::write(&image, b"previous image").unwrap();
+    let out = pathtracer(&["render", scene.to_str().unwrap(), "-o", image.to_str().unwrap(), "--quiet"]);
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("broken.txt:12:"), "no position in: {stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert_eq!(std::fs::read(&image).unwrap(), b"previous image");
+}
+
+#[test]
+fn a_missing_mesh_is_an_error_naming_the_path() {
+    let dir = temp_dir("mesh");
+    let scene = dir.join("mesh.txt");
+    std::fs::write(
+        &scene,
+        "PerspectiveCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 width 8 height 8 }\nMaterials { numMaterials 1 Material { color 1 1 1 } }\nGroup { numObjects 1 MaterialIndex 0 TriangleMesh { obj_file mesh/not_there.obj } }\n",
+    )
+    .unwrap();
+    let image = dir.join("mesh.bmp");
+    let out = pathtracer(&["render", scene.to_str().unwrap(), "-o", image.to_str().unwrap(), "--quiet"]);
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("not_there.obj"), "{stderr}");
+    assert!(!image.exists());
+}
+
+#[test]
+fn an_unknown_output_format_is_refused_before_rendering() {
+    let dir = temp_dir("format");
+    let out = render_smallpt(&dir.join("image.xyz"), "1", "0");
+    assert!(!out.status.success());
+    assert!(!dir.join("image.xyz").exists());
+}
+
+#[test]
+fn check_reports_every_shared_scene() {
+    let shared = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/scenes");
+    if !shared.exists() {
+        eprintln!("skipped: ../shared not found");
+        return;
+    }
+    let mut args = vec!["check".to_string()];
+    for name in ["report_scene11_dragons.txt", "report_scene15_spheres.txt", "report_scene16_vase.txt"] {
+        args.push(shared.join(name).to_string_lossy().into_owned());
+    }
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let out = pathtracer(&args);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(stdout.matches("report_scene").count(), 3, "{stdout}");
+}
