@@ -8,6 +8,7 @@
 pub mod color;
 pub mod image_io;
 pub mod math;
+pub mod metrics;
 pub mod rng;
 pub mod scene;
 pub mod texture;
