@@ -144,6 +144,30 @@ mod tests {
     }
 
     #[test]
+    fn separable_blur_equals_the_direct_cut_window() {
+        let (width, height) = (17, 9);
+        let input: Vec<f64> = (0..width * height)
+            .map(|i| ((i * 7919) % 101) as f64 / 100.0)
+            .collect();
+        let filter = SeparableGaussian::new(width, height);
+        let blurred = filter.apply(&input);
+        let weight = |d: f64| (-d * d / (2.0 * SIGMA * SIGMA)).exp();
+        for y in 0..height {
+            for x in 0..width {
+                let (mut sum, mut total) = (0.0, 0.0);
+                for j in y.saturating_sub(RADIUS)..(y + RADIUS + 1).min(height) {
+                    for i in x.saturating_sub(RADIUS)..(x + RADIUS + 1).min(width) {
+                        let w = weight(i as f64 - x as f64) * weight(j as f64 - y as f64);
+                        sum += w * input[j * width + i];
+                        total += w;
+                    }
+                }
+                assert!((blurred[y * width + x] - sum / total).abs() < 1e-12);
+            }
+        }
+    }
+
+    #[test]
     fn blur_of_an_impulse_sums_to_one_in_the_interior() {
         let filter = SeparableGaussian::new(21, 21);
         let mut impulse = vec![0.0; 21 * 21];
