@@ -3,7 +3,8 @@
 //!
 //! Data flows one way:
 //! scene text -> syntax tree -> built [`scene::model::Scene`] -> [`world::World`]
-//! -> camera rays -> integrator samples -> film -> image file.
+//! -> camera rays -> integrator samples -> film -> image file ([`image_io`]);
+//! [`metrics`] compares a rendered image with a reference.
 
 pub mod color;
 pub mod image_io;
