@@ -4,7 +4,8 @@
 //! Data flows one way:
 //! scene text -> syntax tree -> built [`scene::model::Scene`] -> [`world::World`]
 //! -> [`camera::Camera`] rays -> [`integrator`] samples -> [`film`] ->
-//! [`image_io`] file. [`render::render`] is the only parallel code.
+//! [`image_io`] file. [`render::render`] is the only parallel code;
+//! [`metrics`] compares images (RMSE, relative MSE, PSNR, SSIM).
 
 pub mod camera;
 pub mod color;
@@ -12,6 +13,7 @@ pub mod film;
 pub mod image_io;
 pub mod integrator;
 pub mod math;
+pub mod metrics;
 pub mod render;
 pub mod rng;
 pub mod sampling;

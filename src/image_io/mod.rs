@@ -1,0 +1,125 @@
+//! Reading and writing images: BMP, PNG and PFM, written atomically.
+//!
+//! The format of a written file is chosen by its extension (case-insensitive);
+//! a read file is recognised by its content. Every writer encodes the whole file
+//! in memory first and hands the bytes to [`atomic::write_file`], so the
+//! destination either receives a complete image or is left exactly as it was.
+
+mod atomic;
+mod bmp_format;
+mod decode;
+mod pfm;
+mod png_format;
+mod quantize;
+
+use std::path::Path;
+
+use crate::color::Color;
+
+/// A linear RGB image, row 0 at the top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    pub width: usize,
+    pub height: usize,
+    pub pixels: Vec<Color>,
+}
+
+/// The largest width or height accepted when reading or writing.
+pub(crate) const MAX_DIMENSION: usize = 1 << 15;
+
+/// The largest pixel count accepted when reading (64 Mpixel, 1.5 GiB of `Color`).
+pub(crate) const MAX_PIXELS: usize = 1 << 26;
+
+/// The file formats this module writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Format {
+    Bmp,
+    Png,
+    Pfm,
+}
+
+const SUPPORTED_EXTENSIONS: &str = ".bmp, .png, .pfm";
+
+impl Format {
+    fn from_path(path: &Path) -> Result<Format, String> {
+        let extension = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(|e| e.to_ascii_lowercase());
+        match extension.as_deref() {
+            Some("bmp") => Ok(Format::Bmp),
+            Some("png") => Ok(Format::Png),
+            Some("pfm") => Ok(Format::Pfm),
+            Some(other) => Err(format!(
+                "{}: unsupported image extension '.{other}' (supported: {SUPPORTED_EXTENSIONS})",
+                path.display()
+            )),
+            None => Err(format!(
+                "{}: no image extension (supported: {SUPPORTED_EXTENSIONS})",
+                path.display()
+            )),
+        }
+    }
+}
+
+/// Checks that the pixel buffer matches the dimensions and that the size is writable.
+fn validate(path: &Path, image: &Image) -> Result<(), String> {
+    if image.width == 0 || image.height == 0 {
+        return Err(format!(
+            "{}: cannot write an empty {}x{} image",
+            path.display(),
+            image.width,
+            image.height
+        ));
+    }
+    if image.width > MAX_DIMENSION || image.height > MAX_DIMENSION {
+        return Err(format!(
+            "{}: image of {}x{} exceeds the limit of {MAX_DIMENSION} pixels per side",
+            path.display(),
+            image.width,
+            image.height
+        ));
+    }
+    if image.pixels.len() != image.width * image.height {
+        return Err(format!(
+            "{}: image claims {}x{} pixels but holds {}",
+            path.display(),
+            image.width,
+            image.height,
+            image.pixels.len()
+        ));
+    }
+    Ok(())
+}
+
+/// Writes `image` to `path`, the format chosen by the extension (`.bmp`, `.png`:
+/// each channel clamped to [0, 1], raised to `1/gamma` when `gamma` is given,
+/// scaled by 255; `.pfm`: linear radiance). The file appears whole or not at all.
+pub fn write_image(path: &Path, image: &Image, gamma: Option<f64>) -> Result<(), String> {
+    let format = Format::from_path(path)?;
+    validate(path, image)?;
+    let bytes = match format {
+        Format::Bmp => bmp_format::encode(image, gamma),
+        Format::Png => png_format::encode(image, gamma),
+        Format::Pfm => Ok(pfm::encode(image)),
+    }
+    .map_err(|e| format!("{}: {e}", path.display()))?;
+    atomic::write_file(path, &bytes)
+}
+
+/// Reads a BMP, PNG or PFM image (LDR values mapped to [0, 1] without gamma).
+///
+/// The format is recognised by the file's content, not its extension. JPEG and
+/// TGA files are read too. PFM values are returned as stored (linear).
+pub fn read_image(path: &Path) -> Result<Image, String> {
+    let bytes = decode::read_capped(path)?;
+    let result = if pfm::is_pfm(&bytes) {
+        pfm::decode(&bytes)
+    } else {
+        decode::decode_ldr(&bytes)
+    };
+    result.map_err(|e| format!("{}: {e}", path.display()))
+}
+
+#[cfg(test)]
+mod tests;
