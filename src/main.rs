@@ -7,7 +7,8 @@ use std::time::Instant;
 
 use clap::{Args, Parser, Subcommand};
 
-use pathtracer::image_io::write_image;
+use pathtracer::image_io::{check_writable, read_image, write_image};
+use pathtracer::metrics::compare;
 use pathtracer::integrator::Integrator;
 use pathtracer::render::{RenderSettings, render};
 use pathtracer::scene::model::{Dialect, Scene};
@@ -32,6 +33,16 @@ enum Command {
     },
     /// Render a scene file to an image.
     Render(RenderArgs),
+    /// Compare an image with a reference: RMSE, relative MSE, PSNR, SSIM.
+    Compare {
+        /// The image under test (BMP, PNG or PFM).
+        image: PathBuf,
+        /// The reference image.
+        reference: PathBuf,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 #[derive(Args, Clone)]
@@ -94,6 +105,11 @@ fn main() -> ExitCode {
             scene_options,
         } => check(&scenes, &scene_options),
         Command::Render(args) => render_command(&args),
+        Command::Compare {
+            image,
+            reference,
+            json,
+        } => compare_command(&image, &reference, json),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -136,23 +152,28 @@ fn check(scenes: &[PathBuf], options: &SceneOptions) -> Result<(), String> {
 
 fn render_command(args: &RenderArgs) -> Result<(), String> {
     let started = Instant::now();
+    let output = args
+        .output
+        .clone()
+        .unwrap_or_else(|| default_output(&args.scene));
+    // Refuse an unwritable output before the scene is read and rendered.
+    check_writable(&output, 1, 1)?;
     let scene = load_scene(&args.scene, &load_options(&args.scene_options))
         .map_err(|e| e.to_string())?;
     report_scene_warnings(&scene);
+    let width = args.width.unwrap_or(scene.camera.width);
+    let height = args.height.unwrap_or(scene.camera.height);
+    check_writable(&output, width as usize, height as usize)?;
     let world = World::build(&scene);
     let settings = RenderSettings {
-        width: args.width.unwrap_or(scene.camera.width),
-        height: args.height.unwrap_or(scene.camera.height),
+        width,
+        height,
         spp: args.spp,
         seed: args.seed,
         threads: args.threads.map(|t| t as usize),
         integrator: Integrator::Original,
         progress: !args.quiet,
     };
-    let output = args
-        .output
-        .clone()
-        .unwrap_or_else(|| default_output(&args.scene));
     let (image, stats) = render(&scene, &world, &settings)?;
     write_image(&output, &image, args.gamma)
         .map_err(|e| format!("{}: {e}", output.display()))?;
@@ -167,6 +188,18 @@ fn render_command(args: &RenderArgs) -> Result<(), String> {
         stats.samples_per_second() / 1e6,
         stats.dropped
     );
+    Ok(())
+}
+
+fn compare_command(image: &Path, reference: &Path, json: bool) -> Result<(), String> {
+    let test = read_image(image)?;
+    let reference_image = read_image(reference)?;
+    let comparison = compare(&test, &reference_image)?;
+    if json {
+        println!("{}", comparison.to_json());
+    } else {
+        println!("{comparison}");
+    }
     Ok(())
 }
 

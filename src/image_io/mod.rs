@@ -62,6 +62,19 @@ impl Format {
     }
 }
 
+/// Checks, before any work is done, that an image of `width` x `height` can be
+/// written to `path` (known extension, size within limits).
+pub fn check_writable(path: &Path, width: usize, height: usize) -> Result<(), String> {
+    Format::from_path(path)?;
+    if width == 0 || height == 0 || width > MAX_DIMENSION || height > MAX_DIMENSION {
+        return Err(format!(
+            "{}: cannot write a {width}x{height} image (1 to {MAX_DIMENSION} pixels per side)",
+            path.display()
+        ));
+    }
+    Ok(())
+}
+
 /// Checks that the pixel buffer matches the dimensions and that the size is writable.
 fn validate(path: &Path, image: &Image) -> Result<(), String> {
     if image.width == 0 || image.height == 0 {
