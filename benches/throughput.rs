@@ -19,7 +19,9 @@ use pathtracer::scene::{LoadOptions, load_scene};
 use pathtracer::world::World;
 
 fn shared(relative: &str) -> Option<PathBuf> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared").join(relative);
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared")
+        .join(relative);
     if path.exists() {
         Some(path)
     } else {
@@ -64,7 +66,8 @@ fn load_obj(path: &Path) -> MeshData {
         let base = mesh.positions.len() as u32;
         let m = model.mesh;
         for p in m.positions.chunks_exact(3) {
-            mesh.positions.push(Vec3::new(p[0] as f64, p[1] as f64, p[2] as f64));
+            mesh.positions
+                .push(Vec3::new(p[0] as f64, p[1] as f64, p[2] as f64));
         }
         for t in m.indices.chunks_exact(3) {
             mesh.triangles.push([base + t[0], base + t[1], base + t[2]]);
@@ -88,7 +91,11 @@ fn incoherent_rays(world: &World, count: usize) -> Vec<Ray> {
             let origin = center + Vec3::new(s * phi.cos(), s * phi.sin(), z) * radius;
             let e = bounds.extent();
             let target = bounds.min
-                + Vec3::new(e.x * rng.next_f64(), e.y * rng.next_f64(), e.z * rng.next_f64());
+                + Vec3::new(
+                    e.x * rng.next_f64(),
+                    e.y * rng.next_f64(),
+                    e.z * rng.next_f64(),
+                );
             Ray::new(origin, (target - origin).normalize(), 0.0)
         })
         .collect()
@@ -156,7 +163,10 @@ fn primitives(c: &mut Criterion) {
 fn renders(c: &mut Criterion) {
     let mut scenes = vec![(
         "smallpt",
-        PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/testcases/smallpt.txt")),
+        PathBuf::from(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/testcases/smallpt.txt"
+        )),
     )];
     if let Some(path) = shared("scenes/report_scene11_dragons.txt") {
         scenes.push(("dragons", path));

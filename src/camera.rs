@@ -182,7 +182,8 @@ mod tests {
         let n = 200;
         for i in 0..n {
             for j in 0..n {
-                let (x, y) = concentric_disk([(i as f64 + 0.5) / n as f64, (j as f64 + 0.5) / n as f64]);
+                let (x, y) =
+                    concentric_disk([(i as f64 + 0.5) / n as f64, (j as f64 + 0.5) / n as f64]);
                 let r2 = x * x + y * y;
                 assert!(r2 <= 1.0 + 1e-12);
                 if r2 < 0.25 {

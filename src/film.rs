@@ -35,12 +35,39 @@ impl PixelSum {
     }
 }
 
-/// Averages a row-major film (row 0 at the top) into an image.
-pub fn to_image(width: usize, height: usize, pixels: &[PixelSum]) -> Image {
-    Image {
-        width,
-        height,
-        pixels: pixels.iter().map(PixelSum::mean).collect(),
+/// The sums of every pixel, row-major with row 0 at the top. Renders add to a
+/// film, so that a longer render continues a shorter one.
+#[derive(Clone, Debug)]
+pub struct Film {
+    pub width: usize,
+    pub height: usize,
+    pub pixels: Vec<PixelSum>,
+}
+
+impl Film {
+    pub fn new(width: usize, height: usize) -> Film {
+        Film {
+            width,
+            height,
+            pixels: vec![PixelSum::default(); width * height],
+        }
+    }
+
+    /// The average of each pixel's samples.
+    pub fn to_image(&self) -> Image {
+        Image {
+            width: self.width,
+            height: self.height,
+            pixels: self.pixels.iter().map(PixelSum::mean).collect(),
+        }
+    }
+
+    pub fn samples(&self) -> u64 {
+        self.pixels.iter().map(|p| p.samples as u64).sum()
+    }
+
+    pub fn dropped(&self) -> u64 {
+        self.pixels.iter().map(|p| p.dropped as u64).sum()
     }
 }
 

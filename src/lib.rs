@@ -9,11 +9,13 @@
 
 pub mod camera;
 pub mod color;
+pub mod converge;
 pub mod film;
 pub mod image_io;
 pub mod integrator;
 pub mod math;
 pub mod metrics;
+pub mod plot;
 pub mod render;
 pub mod rng;
 pub mod sampling;

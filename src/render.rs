@@ -2,13 +2,14 @@
 //! sample with its own generator seeded from (pixel, sample index, seed).
 
 use std::io::IsTerminal;
+use std::ops::Range;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use rayon::prelude::*;
 
 use crate::camera::Camera;
-use crate::film::{PixelSum, to_image};
+use crate::film::Film;
 use crate::image_io::Image;
 use crate::integrator::{Integrator, SceneView};
 use crate::rng::Rng;
@@ -51,12 +52,30 @@ pub fn render(
     world: &World,
     settings: &RenderSettings,
 ) -> Result<(Image, RenderStats), String> {
-    let width = settings.width.max(1) as usize;
-    let height = settings.height.max(1) as usize;
+    let mut film = Film::new(
+        settings.width.max(1) as usize,
+        settings.height.max(1) as usize,
+    );
+    let stats = render_into(scene, world, settings, &mut film, 0..settings.spp)?;
+    Ok((film.to_image(), stats))
+}
+
+/// Adds the pixel samples with indices in `samples` to `film`. Sample `i` of a
+/// pixel is the same whichever call renders it, so rendering 0..4 and then
+/// 4..8 gives the image of rendering 0..8.
+pub fn render_into(
+    scene: &Scene,
+    world: &World,
+    settings: &RenderSettings,
+    film: &mut Film,
+    samples: Range<u32>,
+) -> Result<RenderStats, String> {
+    let width = film.width;
+    let height = film.height;
     let camera = Camera::new(&scene.camera, width as u32, height as u32);
     let view = SceneView::new(scene, world);
     let uses_time = has_motion(&scene.root);
-    let mut film = vec![PixelSum::default(); width * height];
+    let before = (film.samples(), film.dropped());
     let rows_done = AtomicUsize::new(0);
     let start = Instant::now();
     let mut builder = rayon::ThreadPoolBuilder::new();
@@ -72,17 +91,21 @@ pub fn render(
             scope.spawn(|| report_progress(&rows_done, height, start));
         }
         pool.install(|| {
-            film.par_chunks_mut(width)
+            film.pixels
+                .par_chunks_mut(width)
                 .enumerate()
                 .for_each(|(row, pixels)| {
                     let y = height - 1 - row;
                     for (x, pixel) in pixels.iter_mut().enumerate() {
                         let pixel_index = (row * width + x) as u64;
-                        for sample in 0..settings.spp {
-                            let mut rng = Rng::for_sample(pixel_index, sample as u64, settings.seed);
+                        for sample in samples.clone() {
+                            let mut rng =
+                                Rng::for_sample(pixel_index, sample as u64, settings.seed);
                             let sub = sample % 4;
-                            let film_x = x as f64 + (0.5 + (sub % 2) as f64 + tent(rng.next_f64())) * 0.5;
-                            let film_y = y as f64 + (0.5 + (sub / 2) as f64 + tent(rng.next_f64())) * 0.5;
+                            let film_x =
+                                x as f64 + (0.5 + (sub % 2) as f64 + tent(rng.next_f64())) * 0.5;
+                            let film_y =
+                                y as f64 + (0.5 + (sub / 2) as f64 + tent(rng.next_f64())) * 0.5;
                             let lens = if camera.has_lens() {
                                 [rng.next_f64(), rng.next_f64()]
                             } else {
@@ -100,19 +123,22 @@ pub fn render(
     if show_progress {
         eprintln!();
     }
-    let stats = RenderStats {
+    Ok(RenderStats {
         seconds: start.elapsed().as_secs_f64(),
-        samples: film.iter().map(|p| p.samples as u64).sum(),
-        dropped: film.iter().map(|p| p.dropped as u64).sum(),
-    };
-    Ok((to_image(width, height, &film), stats))
+        samples: film.samples() - before.0,
+        dropped: film.dropped() - before.1,
+    })
 }
 
 /// smallpt's tent filter: maps a uniform number in [0, 1) to an offset in
 /// (-1, 1) with a triangular density.
 pub fn tent(u: f64) -> f64 {
     let r = 2.0 * u;
-    if r < 1.0 { r.sqrt() - 1.0 } else { 1.0 - (2.0 - r).sqrt() }
+    if r < 1.0 {
+        r.sqrt() - 1.0
+    } else {
+        1.0 - (2.0 - r).sqrt()
+    }
 }
 
 fn has_motion(root: &Object) -> bool {
@@ -135,7 +161,10 @@ fn report_progress(rows_done: &AtomicUsize, rows: usize, start: Instant) {
         } else {
             "estimating".to_string()
         };
-        eprint!("\rrendering {:5.1}%  {elapsed:.0} s  {eta}    ", fraction * 100.0);
+        eprint!(
+            "\rrendering {:5.1}%  {elapsed:.0} s  {eta}    ",
+            fraction * 100.0
+        );
         if done >= rows {
             return;
         }

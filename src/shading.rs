@@ -91,7 +91,11 @@ fn perturb(hit: &WorldHit, texel: Color) -> Vec3 {
     let t = (hit.tangent - n * n.dot(&hit.tangent)).try_normalize(1e-12);
     let Some(t) = t else { return n };
     let b = n.cross(&t);
-    let local = Vec3::new(2.0 * texel.r - 1.0, 2.0 * texel.g - 1.0, 2.0 * texel.b - 1.0);
+    let local = Vec3::new(
+        2.0 * texel.r - 1.0,
+        2.0 * texel.g - 1.0,
+        2.0 * texel.b - 1.0,
+    );
     (t * local.x + b * local.y + n * local.z)
         .try_normalize(1e-12)
         .unwrap_or(n)

@@ -47,7 +47,11 @@ fn same_seed_gives_identical_bytes_for_one_and_two_threads() {
     let other_seed = dir.join("other.bmp");
     for (path, threads, seed) in [(&one, "1", "5"), (&two, "2", "5"), (&other_seed, "2", "6")] {
         let out = render_smallpt(path, threads, seed);
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
     }
     let a = std::fs::read(&one).unwrap();
     let b = std::fs::read(&two).unwrap();
@@ -70,10 +74,19 @@ fn a_syntax_error_names_file_line_and_column_and_writes_nothing() {
     .unwrap();
     let image = dir.join("out.bmp");
     std::fs::write(&image, b"previous image").unwrap();
-    let out = pathtracer(&["render", scene.to_str().unwrap(), "-o", image.to_str().unwrap(), "--quiet"]);
+    let out = pathtracer(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        image.to_str().unwrap(),
+        "--quiet",
+    ]);
     assert!(!out.status.success());
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(stderr.contains("broken.txt:12:"), "no position in: {stderr}");
+    assert!(
+        stderr.contains("broken.txt:12:"),
+        "no position in: {stderr}"
+    );
     assert!(!stderr.contains("panicked"), "{stderr}");
     assert_eq!(std::fs::read(&image).unwrap(), b"previous image");
 }
@@ -88,7 +101,13 @@ fn a_missing_mesh_is_an_error_naming_the_path() {
     )
     .unwrap();
     let image = dir.join("mesh.bmp");
-    let out = pathtracer(&["render", scene.to_str().unwrap(), "-o", image.to_str().unwrap(), "--quiet"]);
+    let out = pathtracer(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        image.to_str().unwrap(),
+        "--quiet",
+    ]);
     assert!(!out.status.success());
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("not_there.obj"), "{stderr}");
@@ -111,12 +130,20 @@ fn check_reports_every_shared_scene() {
         return;
     }
     let mut args = vec!["check".to_string()];
-    for name in ["report_scene11_dragons.txt", "report_scene15_spheres.txt", "report_scene16_vase.txt"] {
+    for name in [
+        "report_scene11_dragons.txt",
+        "report_scene15_spheres.txt",
+        "report_scene16_vase.txt",
+    ] {
         args.push(shared.join(name).to_string_lossy().into_owned());
     }
     let args: Vec<&str> = args.iter().map(String::as_str).collect();
     let out = pathtracer(&args);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert_eq!(stdout.matches("report_scene").count(), 3, "{stdout}");
 }

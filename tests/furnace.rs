@@ -24,7 +24,11 @@ fn furnace_mean(material: Material, paths: u64) -> (Color, f64) {
     let mut sum_sq = 0.0;
     for i in 0..paths {
         let mut rng = Rng::for_sample(i, 0, 7);
-        let d = Vec3::new(rng.next_f64() - 0.5, rng.next_f64() - 0.5, rng.next_f64() - 0.5);
+        let d = Vec3::new(
+            rng.next_f64() - 0.5,
+            rng.next_f64() - 0.5,
+            rng.next_f64() - 0.5,
+        );
         let ray = Ray::new(Vec3::new(1.0, 2.0, -3.0), d.normalize(), 0.0);
         let l = Integrator::Original.radiance(&view, ray, &mut rng);
         sum += l;

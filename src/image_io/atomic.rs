@@ -13,7 +13,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 static NEXT_TEMPORARY: AtomicU64 = AtomicU64::new(0);
 
 /// Writes `bytes` to `path` atomically, creating the parent directory if missing.
-pub(super) fn write_file(path: &Path, bytes: &[u8]) -> Result<(), String> {
+pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), String> {
     let shown = path.display();
     let file_name = path
         .file_name()

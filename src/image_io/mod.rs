@@ -12,6 +12,9 @@ mod pfm;
 mod png_format;
 mod quantize;
 
+/// Writes any bytes to a file whole or not at all (temporary file + rename).
+pub use atomic::write_file as write_atomically;
+
 use std::path::Path;
 
 use crate::color::Color;

@@ -1,0 +1,139 @@
+//! `pathtracer converge` (error against time for one scene) and
+//! `pathtracer plot` (several such curves in one SVG).
+
+use std::path::PathBuf;
+
+use clap::Args;
+
+use pathtracer::converge::{converge, read_csv_series, to_csv};
+use pathtracer::image_io::{read_image, write_image};
+use pathtracer::plot::{Series, log_log_svg};
+use pathtracer::render::render;
+use pathtracer::world::World;
+
+use super::{SamplingOptions, default_output, load_for_render};
+
+/// Seeds of references differ from the seeds of the runs they judge.
+const REFERENCE_SEED_OFFSET: u64 = 0x5eed_0f_4ef;
+
+#[derive(Args)]
+pub struct ConvergeArgs {
+    scene: PathBuf,
+    /// Reference image (PFM for linear radiance). Without one, a reference is
+    /// first rendered at --reference-spp and saved next to the CSV.
+    #[arg(long)]
+    reference: Option<PathBuf>,
+    /// Samples per pixel of the reference rendered when none is given.
+    #[arg(long, default_value_t = 4096)]
+    reference_spp: u32,
+    /// The last stage's samples per pixel (stages: 1, 2, 4, ...).
+    #[arg(long, default_value_t = 256)]
+    max_spp: u32,
+    /// CSV of (spp, seconds, rmse, rel_mse, ssim); default output/<scene>_converge.csv.
+    #[arg(long)]
+    csv: Option<PathBuf>,
+    /// SVG plot of relative MSE against seconds; default output/<scene>_converge.svg.
+    #[arg(long)]
+    plot: Option<PathBuf>,
+    #[command(flatten)]
+    sampling: SamplingOptions,
+}
+
+pub fn run(args: &ConvergeArgs) -> Result<(), String> {
+    let scene = load_for_render(&args.scene, &args.sampling.scene)?;
+    let world = World::build(&scene);
+    let settings = args.sampling.settings(&scene, args.max_spp, false);
+    let reference = match &args.reference {
+        Some(path) => read_image(path)?,
+        None => {
+            let path = default_output(&args.scene, "_reference.pfm");
+            let mut reference_settings = args.sampling.settings(&scene, args.reference_spp, true);
+            reference_settings.seed = settings.seed.wrapping_add(REFERENCE_SEED_OFFSET);
+            eprintln!(
+                "rendering a reference at {} spp into {}",
+                args.reference_spp,
+                path.display()
+            );
+            let (image, stats) = render(&scene, &world, &reference_settings)?;
+            eprintln!("reference took {:.1} s", stats.seconds);
+            write_image(&path, &image, None)?;
+            image
+        }
+    };
+    println!("spp  seconds  rmse  rel_mse  ssim");
+    let points = converge(&scene, &world, &settings, &reference, args.max_spp, |p| {
+        println!(
+            "{} {:.3} {:.6} {:.6e} {:.4}",
+            p.spp, p.seconds, p.rmse, p.rel_mse, p.ssim
+        )
+    })?;
+    let csv = args
+        .csv
+        .clone()
+        .unwrap_or_else(|| default_output(&args.scene, "_converge.csv"));
+    write_text(&csv, &to_csv(&points))?;
+    let name = args
+        .scene
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let series = [Series {
+        name: "pathtracer".into(),
+        points: points.iter().map(|p| (p.seconds, p.rel_mse)).collect(),
+    }];
+    let svg = args
+        .plot
+        .clone()
+        .unwrap_or_else(|| default_output(&args.scene, "_converge.svg"));
+    write_text(
+        &svg,
+        &log_log_svg(&name, "seconds", "relative MSE", &series),
+    )?;
+    println!("wrote {} and {}", csv.display(), svg.display());
+    Ok(())
+}
+
+#[derive(Args)]
+pub struct PlotArgs {
+    /// CSV files with `seconds` and the plotted column; each is one curve,
+    /// named `name=path` or by its file name.
+    #[arg(required = true)]
+    curves: Vec<String>,
+    /// The SVG file to write.
+    #[arg(short, long)]
+    output: PathBuf,
+    #[arg(long, default_value = "")]
+    title: String,
+    /// The column plotted against seconds.
+    #[arg(long, default_value = "rel_mse")]
+    column: String,
+}
+
+pub fn plot(args: &PlotArgs) -> Result<(), String> {
+    let mut series = Vec::new();
+    for curve in &args.curves {
+        let (name, path) = match curve.split_once('=') {
+            Some((name, path)) => (name.to_string(), PathBuf::from(path)),
+            None => {
+                let path = PathBuf::from(curve);
+                let name = path
+                    .file_stem()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .unwrap_or_default();
+                (name, path)
+            }
+        };
+        let text =
+            std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let points =
+            read_csv_series(&text, &args.column).map_err(|e| format!("{}: {e}", path.display()))?;
+        series.push(Series { name, points });
+    }
+    let svg = log_log_svg(&args.title, "seconds", &args.column, &series);
+    write_text(&args.output, &svg)
+}
+
+/// Writes a text file whole or not at all.
+fn write_text(path: &std::path::Path, text: &str) -> Result<(), String> {
+    pathtracer::image_io::write_atomically(path, text.as_bytes())
+}

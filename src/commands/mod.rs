@@ -1,0 +1,100 @@
+//! Options shared by the subcommands, and scene loading with its warnings.
+
+pub mod check;
+pub mod compare;
+pub mod converge;
+pub mod render;
+
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+
+use pathtracer::integrator::Integrator;
+use pathtracer::render::RenderSettings;
+use pathtracer::scene::model::{Dialect, Scene};
+use pathtracer::scene::{LoadOptions, load_scene};
+
+#[derive(Args, Clone)]
+pub struct SceneOptions {
+    /// Directory that relative mesh and texture paths resolve against first.
+    #[arg(long)]
+    pub base: Option<PathBuf>,
+    /// Read the file as this dialect instead of detecting it.
+    #[arg(long, value_parser = parse_dialect)]
+    pub dialect: Option<Dialect>,
+    /// Treat warnings (unknown fields, count mismatches, ...) as errors.
+    #[arg(long)]
+    pub strict: bool,
+}
+
+impl SceneOptions {
+    pub fn load_options(&self) -> LoadOptions {
+        LoadOptions {
+            base: self.base.clone(),
+            dialect: self.dialect,
+            strict: self.strict,
+        }
+    }
+}
+
+/// How to sample the image, shared by `render` and `converge`.
+#[derive(Args, Clone)]
+pub struct SamplingOptions {
+    /// Seed of the random sequence: the same seed gives the same image.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Worker threads (default: one per core).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
+    /// Image width, overriding the scene's camera.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=32768))]
+    pub width: Option<u32>,
+    /// Image height, overriding the scene's camera.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=32768))]
+    pub height: Option<u32>,
+    #[command(flatten)]
+    pub scene: SceneOptions,
+}
+
+impl SamplingOptions {
+    pub fn settings(&self, scene: &Scene, spp: u32, progress: bool) -> RenderSettings {
+        RenderSettings {
+            width: self.width.unwrap_or(scene.camera.width),
+            height: self.height.unwrap_or(scene.camera.height),
+            spp,
+            seed: self.seed,
+            threads: self.threads.map(|t| t as usize),
+            integrator: Integrator::Original,
+            progress,
+        }
+    }
+}
+
+fn parse_dialect(name: &str) -> Result<Dialect, String> {
+    Dialect::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Dialect::ALL.iter().map(|d| d.name()).collect();
+        format!("unknown dialect '{name}' (one of: {})", names.join(", "))
+    })
+}
+
+/// Loads a scene for rendering, printing its warnings and the features it
+/// uses that are not rendered.
+pub fn load_for_render(path: &Path, options: &SceneOptions) -> Result<Scene, String> {
+    let scene = load_scene(path, &options.load_options()).map_err(|e| e.to_string())?;
+    for warning in &scene.warnings {
+        eprintln!("warning: {warning}");
+    }
+    for feature in &scene.unsupported {
+        eprintln!("warning: not rendered yet: {feature}");
+    }
+    Ok(scene)
+}
+
+/// `output/<scene name><suffix>`.
+pub fn default_output(scene: &Path, suffix: &str) -> PathBuf {
+    let stem = scene
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "render".to_string());
+    Path::new("output").join(format!("{stem}{suffix}"))
+}

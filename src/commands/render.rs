@@ -1,0 +1,60 @@
+//! `pathtracer render`: a scene file to an image, with a one-line summary.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use clap::Args;
+
+use pathtracer::image_io::{check_writable, write_image};
+use pathtracer::render::render;
+use pathtracer::world::World;
+
+use super::{SamplingOptions, default_output, load_for_render};
+
+#[derive(Args)]
+pub struct RenderArgs {
+    scene: PathBuf,
+    /// Output image (.bmp, .png or .pfm); default output/<scene name>.bmp.
+    #[arg(short, long)]
+    output: Option<PathBuf>,
+    /// Samples per pixel in total (spread over the 2x2 sub-pixels).
+    #[arg(long, default_value_t = 40, value_parser = clap::value_parser!(u32).range(1..))]
+    spp: u32,
+    /// Gamma for 8-bit output (2.2 for smallpt-style images; default: none,
+    /// as the PA framework writer).
+    #[arg(long)]
+    gamma: Option<f64>,
+    /// Do not print the progress line.
+    #[arg(long)]
+    quiet: bool,
+    #[command(flatten)]
+    sampling: SamplingOptions,
+}
+
+pub fn run(args: &RenderArgs) -> Result<(), String> {
+    let started = Instant::now();
+    let output = args
+        .output
+        .clone()
+        .unwrap_or_else(|| default_output(&args.scene, ".bmp"));
+    // Refuse an unwritable output before the scene is read and rendered.
+    check_writable(&output, 1, 1)?;
+    let scene = load_for_render(&args.scene, &args.sampling.scene)?;
+    let settings = args.sampling.settings(&scene, args.spp, !args.quiet);
+    check_writable(&output, settings.width as usize, settings.height as usize)?;
+    let world = World::build(&scene);
+    let (image, stats) = render(&scene, &world, &settings)?;
+    write_image(&output, &image, args.gamma)?;
+    println!(
+        "{}: {}x{}, {} spp, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped",
+        output.display(),
+        settings.width,
+        settings.height,
+        settings.spp,
+        stats.seconds,
+        started.elapsed().as_secs_f64(),
+        stats.samples_per_second() / 1e6,
+        stats.dropped
+    );
+    Ok(())
+}

@@ -1,0 +1,135 @@
+//! Error against time: a render continued at doubling sample counts, each
+//! stage compared with a reference image.
+
+use std::fmt::Write;
+
+use crate::film::Film;
+use crate::image_io::Image;
+use crate::metrics::compare;
+use crate::render::{RenderSettings, render_into};
+use crate::scene::model::Scene;
+use crate::world::World;
+
+/// One stage of a convergence run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConvergencePoint {
+    pub spp: u32,
+    /// Render time of all samples so far (comparisons not counted).
+    pub seconds: f64,
+    pub rmse: f64,
+    pub rel_mse: f64,
+    pub ssim: f64,
+}
+
+/// Renders 1, 2, 4, ... up to `max_spp` samples per pixel (each stage
+/// continues the previous one) and compares every stage with `reference`.
+pub fn converge(
+    scene: &Scene,
+    world: &World,
+    settings: &RenderSettings,
+    reference: &Image,
+    max_spp: u32,
+    mut on_point: impl FnMut(&ConvergencePoint),
+) -> Result<Vec<ConvergencePoint>, String> {
+    let mut film = Film::new(
+        settings.width.max(1) as usize,
+        settings.height.max(1) as usize,
+    );
+    let mut points = Vec::new();
+    let mut seconds = 0.0;
+    let mut done = 0;
+    let mut next = 1;
+    while done < max_spp {
+        let target = next.min(max_spp);
+        seconds += render_into(scene, world, settings, &mut film, done..target)?.seconds;
+        done = target;
+        let comparison = compare(&film.to_image(), reference)?;
+        let point = ConvergencePoint {
+            spp: done,
+            seconds,
+            rmse: comparison.rmse,
+            rel_mse: comparison.rel_mse,
+            ssim: comparison.ssim,
+        };
+        on_point(&point);
+        points.push(point);
+        next = next.saturating_mul(2);
+    }
+    Ok(points)
+}
+
+pub const CSV_HEADER: &str = "spp,seconds,rmse,rel_mse,ssim";
+
+pub fn to_csv(points: &[ConvergencePoint]) -> String {
+    let mut csv = format!("{CSV_HEADER}\n");
+    for p in points {
+        let _ = writeln!(
+            csv,
+            "{},{:.6},{:.8e},{:.8e},{:.6}",
+            p.spp, p.seconds, p.rmse, p.rel_mse, p.ssim
+        );
+    }
+    csv
+}
+
+/// Reads the (seconds, column) pairs of a convergence CSV (ours or any file
+/// with a header naming `seconds` and the column).
+pub fn read_csv_series(text: &str, column: &str) -> Result<Vec<(f64, f64)>, String> {
+    let mut lines = text.lines().filter(|l| !l.trim().is_empty());
+    let header: Vec<&str> = lines
+        .next()
+        .ok_or("empty CSV file")?
+        .split(',')
+        .map(str::trim)
+        .collect();
+    let find = |name: &str| {
+        header
+            .iter()
+            .position(|h| *h == name)
+            .ok_or_else(|| format!("no '{name}' column in the CSV header"))
+    };
+    let (x, y) = (find("seconds")?, find(column)?);
+    lines
+        .enumerate()
+        .map(|(i, line)| {
+            let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+            let value = |k: usize| -> Result<f64, String> {
+                fields
+                    .get(k)
+                    .and_then(|f| f.parse().ok())
+                    .ok_or_else(|| format!("line {}: not a number in column {}", i + 2, k + 1))
+            };
+            Ok((value(x)?, value(y)?))
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn csv_round_trips() {
+        let points = [
+            ConvergencePoint {
+                spp: 1,
+                seconds: 0.5,
+                rmse: 0.1,
+                rel_mse: 0.02,
+                ssim: 0.5,
+            },
+            ConvergencePoint {
+                spp: 2,
+                seconds: 1.0,
+                rmse: 0.07,
+                rel_mse: 0.01,
+                ssim: 0.6,
+            },
+        ];
+        let series = read_csv_series(&to_csv(&points), "rel_mse").unwrap();
+        assert_eq!(series.len(), 2);
+        assert!((series[1].0 - 1.0).abs() < 1e-9 && (series[1].1 - 0.01).abs() < 1e-12);
+        assert!(read_csv_series("spp,rmse\n1,2\n", "rel_mse").is_err());
+        assert!(read_csv_series("seconds,rel_mse\n1,x\n", "rel_mse").is_err());
+    }
+}
