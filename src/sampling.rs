@@ -35,7 +35,7 @@ pub fn dielectric(d: &Vec3, facing: &Vec3, entering: bool, ior: f64) -> Dielectr
     let reflected = reflect(d, facing);
     let (nc, nt) = (1.0, ior);
     let eta = if entering { nc / nt } else { nt / nc };
-    let cos_in = d.dot(&facing);
+    let cos_in = d.dot(facing);
     let cos2t = 1.0 - eta * eta * (1.0 - cos_in * cos_in);
     if cos2t < 0.0 {
         return Dielectric {
