@@ -14,7 +14,7 @@ use pathtracer::world::World;
 use super::{SamplingOptions, default_output, load_for_render};
 
 /// Seeds of references differ from the seeds of the runs they judge.
-const REFERENCE_SEED_OFFSET: u64 = 0x5eed_0f_4ef;
+const REFERENCE_SEED_OFFSET: u64 = 0x5EED_F4EF;
 
 #[derive(Args)]
 pub struct ConvergeArgs {
