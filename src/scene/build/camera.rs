@@ -70,6 +70,10 @@ pub fn build_camera(
                 cursor.take_numbers();
                 context.unsupported("mist (fog) in the camera is ignored");
             }
+            "dispersion" => {
+                cursor.take_numbers();
+                context.unsupported("dispersion is ignored");
+            }
             "lookat" => {
                 cursor.take_numbers();
             }
