@@ -1,0 +1,67 @@
+//! The shared scene corpus: where it is and which of its scenes are complete.
+
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+
+pub fn shared() -> Option<PathBuf> {
+    let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared"));
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        println!("skipped: ../shared not found");
+        None
+    }
+}
+
+/// (scene file, base folder) of every corpus scene whose assets are all present.
+pub fn corpus(shared: &Path) -> Vec<(PathBuf, PathBuf)> {
+    let mut scenes = Vec::new();
+    let cambrian = shared.join("reference/cambrian-pathtracer/testcases");
+    let mut names: Vec<_> = std::fs::read_dir(&cambrian)
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    names.sort();
+    for path in names
+        .into_iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "txt"))
+    {
+        scenes.push((path, shared.join("reference/cambrian-pathtracer")));
+    }
+    let mut own: Vec<_> = std::fs::read_dir(shared.join("scenes"))
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    own.sort();
+    for path in own
+        .into_iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "txt"))
+    {
+        scenes.push((path, shared.to_path_buf()));
+    }
+    let coursework = shared.join("reference/coursework");
+    let mut repos: Vec<_> = std::fs::read_dir(&coursework)
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    repos.sort();
+    for repo in repos {
+        let Ok(manifest) = std::fs::read_to_string(repo.join("MANIFEST.md")) else {
+            continue;
+        };
+        let mut base = repo.clone();
+        for line in manifest.lines() {
+            if line.starts_with("- Base folder")
+                && let Some(folder) = line.split('`').nth(1)
+            {
+                base = repo.join(folder);
+            }
+            let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+            if let [_, file, status, ..] = cells.as_slice()
+                && status.starts_with("complete")
+                && file.starts_with('`')
+            {
+                scenes.push((repo.join(file.trim_matches('`')), base.clone()));
+            }
+        }
+    }
+    scenes
+}
