@@ -17,7 +17,7 @@ fn furnace_mean(material: Material, paths: u64) -> (Color, f64) {
         motion: Vec3::zeros(),
         material: 0,
     }]);
-    let scene = common::empty_scene(vec![material], root);
+    let scene = common::scene_with(vec![material], root);
     let world = World::build(&scene);
     let view = SceneView::new(&scene, &world);
     let mut sum = Color::BLACK;

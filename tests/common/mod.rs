@@ -1,12 +1,78 @@
-//! Scenes built in code for the integrator tests.
+//! Shared test helpers: the scene corpus in ../shared (where it is and which
+//! of its scenes are complete), and scenes built in code.
+
 #![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
 
 use pathtracer::color::Color;
 use pathtracer::math::Vec3;
 use pathtracer::scene::model::{CameraDesc, Dialect, Material, Object, Scene};
 
-/// A scene with the camera at the origin looking down -z, no objects.
-pub fn empty_scene(materials: Vec<Material>, root: Object) -> Scene {
+pub fn shared() -> Option<PathBuf> {
+    let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared"));
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        println!("skipped: ../shared not found");
+        None
+    }
+}
+
+/// (scene file, base folder) of every corpus scene whose assets are all present.
+pub fn corpus(shared: &Path) -> Vec<(PathBuf, PathBuf)> {
+    let mut scenes = Vec::new();
+    let cambrian = shared.join("reference/cambrian-pathtracer/testcases");
+    let mut names: Vec<_> = std::fs::read_dir(&cambrian)
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    names.sort();
+    for path in names
+        .into_iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "txt"))
+    {
+        scenes.push((path, shared.join("reference/cambrian-pathtracer")));
+    }
+    let mut own: Vec<_> = std::fs::read_dir(shared.join("scenes"))
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    own.sort();
+    for path in own
+        .into_iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "txt"))
+    {
+        scenes.push((path, shared.to_path_buf()));
+    }
+    let coursework = shared.join("reference/coursework");
+    let mut repos: Vec<_> = std::fs::read_dir(&coursework)
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    repos.sort();
+    for repo in repos {
+        let Ok(manifest) = std::fs::read_to_string(repo.join("MANIFEST.md")) else {
+            continue;
+        };
+        let mut base = repo.clone();
+        for line in manifest.lines() {
+            if line.starts_with("- Base folder")
+                && let Some(folder) = line.split('`').nth(1)
+            {
+                base = repo.join(folder);
+            }
+            let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+            if let [_, file, status, ..] = cells.as_slice()
+                && status.starts_with("complete")
+                && file.starts_with('`')
+            {
+                scenes.push((repo.join(file.trim_matches('`')), base.clone()));
+            }
+        }
+    }
+    scenes
+}
+
+/// A scene with the camera at the origin looking down -z, built in code.
+pub fn scene_with(materials: Vec<Material>, root: Object) -> Scene {
     Scene {
         camera: CameraDesc {
             center: Vec3::zeros(),
@@ -30,15 +96,13 @@ pub fn empty_scene(materials: Vec<Material>, root: Object) -> Scene {
     }
 }
 
-/// Path to the shared reference data, or `None` (with a note) when absent.
-pub fn shared(relative: &str) -> Option<std::path::PathBuf> {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared")
-        .join(relative);
+/// A file below `../shared`, or `None` (with a note) when it is absent.
+pub fn shared_file(relative: &str) -> Option<PathBuf> {
+    let path = shared()?.join(relative);
     if path.exists() {
         Some(path)
     } else {
-        eprintln!("skipped: ../shared not found ({})", path.display());
+        println!("skipped: {} not found", path.display());
         None
     }
 }

@@ -1,0 +1,88 @@
+//! The syntax tree of a scene file: words, numbers, blocks and bracket lists, with spans.
+
+use crate::scene::error::Location;
+
+/// One item of a document or of a block body.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Item {
+    pub location: Location,
+    pub kind: ItemKind,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ItemKind {
+    /// A bare word (keyword, path, name).
+    Word(String),
+    /// Anything Rust's `f64` parser fully accepts (with at least one digit).
+    Number(f64),
+    /// `name { items }`; `name` is empty for a brace that follows no word.
+    Block(Block),
+    /// `[ numbers ]`.
+    List(Vec<f64>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Block {
+    pub name: String,
+    pub items: Vec<Item>,
+    /// Where the closing `}` is.
+    pub close: Location,
+}
+
+/// A parsed file: the top-level items.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Document {
+    pub items: Vec<Item>,
+}
+
+impl Item {
+    pub fn word(&self) -> Option<&str> {
+        match &self.kind {
+            ItemKind::Word(w) => Some(w),
+            _ => None,
+        }
+    }
+
+    pub fn number(&self) -> Option<f64> {
+        match self.kind {
+            ItemKind::Number(n) => Some(n),
+            _ => None,
+        }
+    }
+
+    pub fn block(&self) -> Option<&Block> {
+        match &self.kind {
+            ItemKind::Block(b) => Some(b),
+            _ => None,
+        }
+    }
+
+    /// A short description for messages.
+    pub fn describe(&self) -> String {
+        match &self.kind {
+            ItemKind::Word(w) => format!("'{w}'"),
+            ItemKind::Number(n) => format!("number {n}"),
+            ItemKind::Block(b) => format!("block '{}'", b.name),
+            ItemKind::List(_) => "a [ ] list".to_string(),
+        }
+    }
+}
+
+impl Document {
+    /// Calls `visit` on every word and block name of the tree (iteratively).
+    pub fn for_each_word(&self, visit: &mut impl FnMut(&str, &[Item], usize)) {
+        let mut stack: Vec<&[Item]> = vec![&self.items];
+        while let Some(items) = stack.pop() {
+            for (index, item) in items.iter().enumerate() {
+                match &item.kind {
+                    ItemKind::Word(w) => visit(w, items, index),
+                    ItemKind::Block(b) => {
+                        visit(&b.name, items, index);
+                        stack.push(&b.items);
+                    }
+                    _ => {}
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,190 @@
+//! The camera block, read as a key -> value map with every dialect's synonyms.
+
+use crate::math::{Point3, Vec3};
+use crate::scene::ast::Block;
+use crate::scene::build::{Context, Cursor};
+use crate::scene::error::{Location, SceneError};
+use crate::scene::model::{CameraDesc, Dialect, FovAxis};
+
+/// Largest accepted `width * height`.
+pub const MAX_PIXELS: u64 = 1 << 28;
+
+const DEFAULT_SIZE: u32 = 512;
+
+pub fn build_camera(
+    context: &mut Context,
+    block: &Block,
+    location: Location,
+) -> Result<CameraDesc, SceneError> {
+    let name = block.name.as_str();
+    let mut center = Point3::zeros();
+    let mut direction = Vec3::new(0.0, 0.0, -1.0);
+    let mut up = Vec3::new(0.0, 1.0, 0.0);
+    let mut look_from: Option<Point3> = None;
+    let mut look_at: Option<Point3> = None;
+    let mut width: Option<(f64, Location)> = None;
+    let mut height: Option<(f64, Location)> = None;
+    let mut angle = None;
+    let mut canvas_distance = 0.0;
+    let mut focus = None;
+    let mut lens_radius = 0.0;
+    let mut defocus_angle = None;
+    let mut cursor = Cursor::of(block);
+    while let Some(item) = cursor.next() {
+        let Some(key) = item.word() else {
+            context.skip_item(item, name)?;
+            continue;
+        };
+        match key {
+            "center" => center = cursor.vec3(context, key)?,
+            "direction" => direction = cursor.vec3(context, key)?,
+            "up" => up = cursor.vec3(context, key)?,
+            "lookFrom" => look_from = Some(cursor.vec3(context, key)?),
+            "lookAt" => look_at = Some(cursor.vec3(context, key)?),
+            "width" => width = Some((cursor.number(context, key)?, item.location)),
+            "height" => height = Some((cursor.number(context, key)?, item.location)),
+            "angle" => angle = Some(cursor.number(context, key)?),
+            "canvasDistance" => canvas_distance = cursor.number(context, key)?,
+            "focalLength" | "focal" | "focus" | "focus_distance" | "focusDist"
+            | "focusDistance" | "focal_length" | "depth" | "dist" => {
+                let mut distance = cursor.number(context, key)?;
+                if name == "DepthCamera" && key == "focalLength" {
+                    distance += 1.0;
+                }
+                focus = Some(distance);
+            }
+            "aperture" | "aperture_size" | "lens_radius" | "len_radius" | "field"
+            | "interfereRatio" => {
+                let radius = cursor.number(context, key)?;
+                lens_radius = if radius >= 99990.0 {
+                    0.0
+                } else {
+                    radius.max(0.0)
+                };
+            }
+            "defocusAngle" => defocus_angle = Some(cursor.number(context, key)?),
+            "time0" | "time1" | "tStart" | "tEnd" | "start" | "end" => {
+                cursor.take_numbers();
+            }
+            "mist" => {
+                cursor.take_numbers();
+                context.unsupported("mist (fog) in the camera is ignored");
+            }
+            "dispersion" => {
+                cursor.take_numbers();
+                context.unsupported("dispersion is ignored");
+            }
+            "lookat" => {
+                cursor.take_numbers();
+            }
+            _ => context.skip_field(&mut cursor, key, item.location, name)?,
+        }
+    }
+    if matches!(name, "OrthographicCamera" | "FisheyeCamera") {
+        context.unsupported("orthographic and fisheye cameras are rendered as perspective");
+    }
+    if let (Some(from), Some(at)) = (look_from, look_at) {
+        center = from;
+        direction = at - from;
+    } else if let Some(from) = look_from {
+        center = from;
+    }
+    if direction.norm() < 1e-12 || !direction.iter().all(|v| v.is_finite()) {
+        return Err(context.error(location, "the camera direction is zero".into()));
+    }
+    let focus_distance = focus.unwrap_or(1.0);
+    if let Some(theta) = defocus_angle {
+        lens_radius = focus_distance * (theta.to_radians() / 2.0).tan().abs();
+    }
+    let size = |context: &mut Context, value: Option<(f64, Location)>, what: &str| match value {
+        None => Ok(None),
+        Some((v, at)) if v >= 1.0 && v <= MAX_PIXELS as f64 => Ok(Some((v as u32, at))),
+        Some((v, at)) => Err(context.error(at, format!("camera {what} {v} is out of range"))),
+    };
+    let width = size(context, width, "width")?;
+    let height = size(context, height, "height")?;
+    let (width, height) = match (width, height) {
+        (Some((w, at)), Some((h, _))) => {
+            if u64::from(w) * u64::from(h) > MAX_PIXELS {
+                return Err(context.error(at, format!("image size {w}x{h} is too large")));
+            }
+            (w, h)
+        }
+        (w, h) => {
+            context.warn(
+                location,
+                format!("camera without width/height: using {DEFAULT_SIZE}x{DEFAULT_SIZE}"),
+            )?;
+            let w = w.map_or(DEFAULT_SIZE, |(w, _)| w.min(DEFAULT_SIZE * 8));
+            let h = h.map_or(DEFAULT_SIZE, |(h, _)| h.min(DEFAULT_SIZE * 8));
+            (w, h)
+        }
+    };
+    let axis = match context.dialect {
+        Dialect::Cyf | Dialect::Cambrian | Dialect::Cav => FovAxis::Horizontal,
+        _ => FovAxis::Vertical,
+    };
+    let fov = match angle {
+        Some(a) if a > 0.0 && a < 180.0 => Some((a, axis)),
+        Some(a) => return Err(context.error(location, format!("camera angle {a} is out of range"))),
+        None => None,
+    };
+    Ok(CameraDesc {
+        center,
+        direction,
+        up,
+        width,
+        height,
+        fov,
+        canvas_distance,
+        focus_distance,
+        lens_radius,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::scene::LoadOptions;
+    use crate::scene::build::build;
+    use crate::scene::model::FovAxis;
+    use crate::scene::parse::parse;
+    use std::path::Path;
+
+    fn camera(text: &str) -> Result<crate::scene::model::CameraDesc, String> {
+        let doc = parse(text, Path::new("t.txt")).map_err(|e| e.to_string())?;
+        build(&doc, Path::new("t.txt"), &LoadOptions::default())
+            .map(|s| s.camera)
+            .map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn keyed_in_any_order_with_synonyms() {
+        let c = camera("PerspectiveCamera { height 30 aperture 0.5 width 40 focalLength 7 angle 45 center 1 2 3 direction 0 0 -1 up 0 1 0 }")
+            .expect("builds");
+        assert_eq!((c.width, c.height), (40, 30));
+        assert_eq!(c.focus_distance, 7.0);
+        assert_eq!(c.lens_radius, 0.5);
+        assert_eq!(c.fov, Some((45.0, FovAxis::Vertical)));
+    }
+
+    #[test]
+    fn lens_rules() {
+        let c =
+            camera("PerspectiveCamera { width 2 height 2 len_radius 99999 focus 3 }").expect("ok");
+        assert_eq!(c.lens_radius, 0.0);
+        let c = camera("PerspectiveCamera { width 2 height 2 defocusAngle 90 focusDist 2 }")
+            .expect("ok");
+        assert!((c.lens_radius - 2.0).abs() < 1e-9);
+        let c = camera("DepthCamera { width 2 height 2 focalLength 2 }").expect("ok");
+        assert_eq!(c.focus_distance, 3.0);
+    }
+
+    #[test]
+    fn sizes_are_checked() {
+        assert!(camera("PerspectiveCamera { width 1000000000 height 1000000000 }").is_err());
+        let e = camera("PerspectiveCamera {\n width\n}").expect_err("no number");
+        assert!(e.contains("t.txt:3:1"), "{e}");
+        let c = camera("PerspectiveCamera { center 0 0 0 }").expect("defaults");
+        assert_eq!((c.width, c.height), (512, 512));
+    }
+}

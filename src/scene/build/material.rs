@@ -1,0 +1,478 @@
+//! Materials of every dialect normalised to one `Material` (synonyms, §4 conflict rules).
+
+use crate::color::Color;
+use crate::scene::ast::{Block, ItemKind};
+use crate::scene::build::{Context, Cursor};
+use crate::scene::error::{Location, SceneError};
+use crate::scene::model::{Dialect, Material};
+
+/// A path written in the file, with where it was written.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PathRef {
+    pub path: String,
+    pub location: Location,
+}
+
+/// A material before its images are loaded.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MaterialSpec {
+    pub material: Material,
+    pub texture: Option<PathRef>,
+    pub normal_map: Option<PathRef>,
+}
+
+impl MaterialSpec {
+    pub fn new(material: Material) -> Self {
+        MaterialSpec {
+            material,
+            texture: None,
+            normal_map: None,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Kind {
+    Diffuse,
+    Specular,
+    Refract,
+    Light,
+}
+
+impl Kind {
+    fn weights(self) -> [f64; 3] {
+        match self {
+            Kind::Diffuse | Kind::Light => [1.0, 0.0, 0.0],
+            Kind::Specular => [0.0, 1.0, 0.0],
+            Kind::Refract => [0.0, 0.0, 1.0],
+        }
+    }
+
+    fn from_block(name: &str) -> Option<Kind> {
+        match name {
+            "DiffuseMaterial" | "Lambert" | "Lambertian" | "GlossyMaterial" => Some(Kind::Diffuse),
+            "MetalMaterial" | "Metal" | "ReflectiveMaterial" => Some(Kind::Specular),
+            "DielecMaterial" | "Dielectric" | "RefractiveMaterial" => Some(Kind::Refract),
+            "LightMaterial" | "Emissive" | "Light" => Some(Kind::Light),
+            _ => None,
+        }
+    }
+}
+
+/// `prop <Name>` presets of tsc: (diffuse, specular, refract, IOR).
+fn preset(name: &str) -> ([f64; 3], Option<f64>) {
+    match name {
+        "Matte" | "DiffLight" => ([1.0, 0.0, 0.0], None),
+        "Mirror" | "Light" => ([0.0, 1.0, 0.0], None),
+        "Glass" => ([0.0, 0.0, 1.0], Some(1.65)),
+        "China" | "Photo" => ([0.8, 0.2, 0.0], None),
+        "Apple" => ([0.99, 0.1, 0.0], None),
+        "Marble" => ([0.9, 0.1, 0.0], None),
+        "Cobble" => ([0.7, 0.3, 0.0], None),
+        _ => ([0.0, 0.0, 0.0], None),
+    }
+}
+
+/// Reads `Materials { numMaterials n <material>* }`.
+pub fn build_materials(
+    context: &mut Context,
+    block: &Block,
+) -> Result<Vec<MaterialSpec>, SceneError> {
+    let mut specs = Vec::new();
+    let mut expected = None;
+    let mut cursor = Cursor::of(block);
+    while let Some(item) = cursor.next() {
+        if let Some(material) = item.block() {
+            specs.push(build_material(context, material, item.location)?);
+        } else if item.word() == Some("numMaterials") {
+            expected = Some((cursor.integer(context, "numMaterials")?, item.location));
+        } else if let Some(key) = item.word() {
+            context.skip_field(&mut cursor, key, item.location, "Materials")?;
+        } else {
+            context.skip_item(item, "Materials")?;
+        }
+    }
+    if let Some((n, at)) = expected
+        && n != specs.len() as i64
+    {
+        let found = specs.len();
+        context.warn(
+            at,
+            format!("numMaterials says {n} but {found} materials follow"),
+        )?;
+    }
+    Ok(specs)
+}
+
+fn color3(cursor: &mut Cursor, context: &Context, key: &str) -> Result<Color, SceneError> {
+    let v = cursor.vec3(context, key)?;
+    Ok(Color::new(v.x, v.y, v.z))
+}
+
+fn path_after(cursor: &mut Cursor, context: &Context, key: &str) -> Result<PathRef, SceneError> {
+    let location = cursor.here();
+    let path = cursor.word(context, key)?.to_string();
+    Ok(PathRef { path, location })
+}
+
+/// Fields read from one material block, before resolution.
+#[derive(Default)]
+struct Fields {
+    color: Option<Color>,
+    diffuse_color: Option<Color>,
+    specular_color: Option<Color>,
+    emission: Option<Color>,
+    emission_scale: Option<f64>,
+    ior: Option<f64>,
+    rates: [Option<f64>; 3],
+    weights: Option<[f64; 3]>,
+    yao: [Option<f64>; 3],
+    yao_flag: Option<Kind>,
+    per: [Option<f64>; 3],
+    kind: Option<Kind>,
+    reflective: Option<f64>,
+    transmissive: Option<f64>,
+    roughness: f64,
+    texture: Option<PathRef>,
+    normal_map: Option<PathRef>,
+}
+
+fn build_material(
+    context: &mut Context,
+    block: &Block,
+    location: Location,
+) -> Result<MaterialSpec, SceneError> {
+    let name = block.name.as_str();
+    let mut f = Fields::default();
+    let mut cursor = Cursor::of(block);
+    while let Some(item) = cursor.next() {
+        let Some(key) = item.word() else {
+            match item.block().map(|b| b.name.as_str()) {
+                Some("Fresnel") => context.unsupported("Fresnel material blocks are ignored"),
+                Some("translucency") => context.unsupported("translucency is ignored"),
+                _ => context.skip_item(item, name)?,
+            }
+            continue;
+        };
+        read_field(context, &mut cursor, &mut f, key, item.location, name)?;
+    }
+    resolve(context, f, name, location)
+}
+
+fn read_field(
+    context: &mut Context,
+    cursor: &mut Cursor,
+    f: &mut Fields,
+    key: &str,
+    location: Location,
+    name: &str,
+) -> Result<(), SceneError> {
+    match key {
+        "color" => f.color = Some(color3(cursor, context, key)?),
+        "diffuseColor" | "attenuation" | "albedo" => {
+            f.diffuse_color = Some(color3(cursor, context, key)?)
+        }
+        "specularColor" => f.specular_color = Some(color3(cursor, context, key)?),
+        "emission" | "emissionColor" | "emissiveColor" | "Energy" | "luminance" | "lightColor" => {
+            f.emission = Some(color3(cursor, context, key)?)
+        }
+        "boost" | "illumination" => f.emission_scale = Some(cursor.number(context, key)?),
+        "refractiveIndex" | "refractive_index" | "refractive" | "refractionIndex"
+        | "refractive_rate" | "ns" | "ir" => f.ior = Some(cursor.number(context, key)?),
+        "refractRate" if context.dialect == Dialect::Rub => {
+            f.ior = Some(cursor.number(context, key)?)
+        }
+        "diffusionRate" => f.rates[0] = Some(cursor.number(context, key)?),
+        "specularRate" => f.rates[1] = Some(cursor.number(context, key)?),
+        "refractRate" => f.rates[2] = Some(cursor.number(context, key)?),
+        "diff" => f.yao[0] = Some(cursor.number(context, key)?),
+        "refl" => f.yao[1] = Some(cursor.number(context, key)?),
+        "refr" => f.yao[2] = Some(cursor.number(context, key)?),
+        "DIFF" => f.yao_flag = Some(Kind::Diffuse),
+        "SPEC" => f.yao_flag = Some(Kind::Specular),
+        "REFR" => f.yao_flag = Some(Kind::Refract),
+        "perDiffuse" => f.per[0] = Some(cursor.number(context, key)?),
+        "perReflect" => f.per[1] = Some(cursor.number(context, key)?),
+        "perRefract" => f.per[2] = Some(cursor.number(context, key)?),
+        "fuzz" | "fuzziness" | "roughness" => f.roughness = cursor.number(context, key)?,
+        "reflective" => f.reflective = Some(cursor.number(context, key)?),
+        "transmissive" => {
+            f.transmissive = Some(cursor.number(context, key)?);
+            if cursor.peek_number().is_some() {
+                f.ior = Some(cursor.number(context, key)?);
+            }
+        }
+        "type" => read_type(context, cursor, f, location)?,
+        "prop" => {
+            let (weights, ior) = preset(cursor.word(context, key)?);
+            f.weights = Some(weights);
+            f.ior = ior.or(f.ior);
+        }
+        "BRDF" => {
+            let mut n = [0.0; 7];
+            for slot in &mut n {
+                *slot = cursor.number(context, key)?;
+            }
+            f.weights = Some([n[0], n[1], n[2]]);
+            f.ior = Some(n[6]);
+        }
+        "texture" => read_texture(context, cursor, f)?,
+        "Texture" | "texture_file" | "diffuseMap" => {
+            f.texture = Some(path_after(cursor, context, key)?)
+        }
+        "bump" | "normal_file" | "bumpMap" | "normal" => {
+            f.normal_map = Some(path_after(cursor, context, key)?);
+            cursor.take_numbers();
+        }
+        "nTexture" => {
+            cursor.word(context, key)?;
+            context.unsupported("rub normal-map descriptor files (nTexture) are ignored");
+        }
+        "specularMap" | "emissiveMap" | "opacityMap" => {
+            cursor.word(context, key)?;
+            context.unsupported("specular, emissive and opacity maps are ignored");
+        }
+        "cauchy" | "dispersion" => {
+            cursor.take_numbers();
+            context.unsupported("dispersion (wavelength-dependent IOR) is ignored");
+        }
+        "cookTorrence" => {
+            cursor.take_numbers();
+            context.unsupported("Cook-Torrance materials are rendered as their base lobes");
+        }
+        "shininess" | "exponent" | "metallic" | "glossy" | "enableReflect" | "enableRefract"
+        | "textureScale" | "textureLuminance" | "Func" | "opacity" | "transparency"
+        | "transparent" | "ambientColor" | "refractiveColor" | "transmittance"
+        | "reflectiveColor" | "transparentColor" => {
+            cursor.take_numbers();
+        }
+        _ => context.skip_field(cursor, key, location, name)?,
+    }
+    Ok(())
+}
+
+/// `type`: 3 numbers = weights, 1 number = enum, a word = DIFF/SPEC/REFR.
+fn read_type(
+    context: &mut Context,
+    cursor: &mut Cursor,
+    f: &mut Fields,
+    location: Location,
+) -> Result<(), SceneError> {
+    if let Some(ItemKind::Word(word)) = cursor.peek().map(|i| &i.kind) {
+        f.kind = match word.as_str() {
+            "DIFF" => Some(Kind::Diffuse),
+            "SPEC" => Some(Kind::Specular),
+            "REFR" => Some(Kind::Refract),
+            _ => return context.warn(location, format!("unknown material type '{word}'")),
+        };
+        cursor.next();
+        return Ok(());
+    }
+    let numbers = cursor.take_numbers();
+    match numbers.as_slice() {
+        [d, s, r] => f.weights = Some([*d, *s, *r]),
+        [t] => {
+            f.kind = match *t as i64 {
+                0 => Some(Kind::Diffuse),
+                1 => Some(Kind::Specular),
+                2 => Some(Kind::Refract),
+                3 => Some(Kind::Light),
+                _ => return context.warn(location, format!("unknown material type {t}")),
+            }
+        }
+        _ => context.warn(location, "'type' needs 1 or 3 numbers or a word".into())?,
+    }
+    Ok(())
+}
+
+/// `texture`: an integer index, a descriptor `.txt`, a path, or a path + 8 numbers.
+fn read_texture(
+    context: &mut Context,
+    cursor: &mut Cursor,
+    f: &mut Fields,
+) -> Result<(), SceneError> {
+    if cursor.peek_number().is_some() {
+        cursor.take_numbers();
+        context.unsupported("texture tables (integer texture references) are ignored");
+        return Ok(());
+    }
+    let path = path_after(cursor, context, "texture")?;
+    if path.path.ends_with(".txt") {
+        context.unsupported("rub texture descriptor files are ignored");
+    } else {
+        f.texture = Some(path);
+    }
+    if !cursor.take_numbers().is_empty() {
+        context.unsupported("planar texture mappings (texture path + 8 numbers) are ignored");
+    }
+    Ok(())
+}
+
+/// Clamps negative weights and scales them to sum to 1 (diffuse if they sum to 0).
+fn normalise(weights: [f64; 3]) -> [f64; 3] {
+    let w = weights.map(|x| if x.is_finite() { x.max(0.0) } else { 0.0 });
+    let sum: f64 = w.iter().sum();
+    if sum > 0.0 && sum.is_finite() {
+        w.map(|x| x / sum)
+    } else {
+        [1.0, 0.0, 0.0]
+    }
+}
+
+fn resolve(
+    context: &mut Context,
+    f: Fields,
+    name: &str,
+    location: Location,
+) -> Result<MaterialSpec, SceneError> {
+    let block_kind = Kind::from_block(name);
+    let color = f.color.or(f.diffuse_color).unwrap_or(Color::WHITE);
+    let specular_is_emission =
+        context.dialect == Dialect::Rtiow && matches!(name, "LightMaterial" | "Material");
+    let mut emission = f.emission.or(if specular_is_emission {
+        f.specular_color
+    } else {
+        None
+    });
+    let kind = f.kind.or(block_kind);
+    if kind == Some(Kind::Light) && emission.is_none() {
+        emission = Some(color);
+    }
+    let emission = emission
+        .unwrap_or(Color::BLACK)
+        .map(|c| c * f.emission_scale.unwrap_or(1.0));
+    let yao_weights = f.yao[0].is_some() || f.yao[1].is_some() || f.yao_flag.is_some();
+    let mut ior = f.ior;
+    if !yao_weights && let Some(r) = f.yao[2] {
+        ior = Some(r);
+    }
+    let weights = if f.rates.iter().any(Option::is_some) {
+        let s = f.rates[1].unwrap_or(0.0);
+        let r = f.rates[2].unwrap_or(0.0);
+        let d = f.rates[0].unwrap_or(1.0 - s - r);
+        let sum = d + s + r;
+        if (sum - 1.0).abs() > 1e-6 || d < -1e-6 || s < 0.0 || r < 0.0 {
+            return Err(context.error(
+                location,
+                format!("material rates {d} + {s} + {r} must be non-negative and sum to 1"),
+            ));
+        }
+        [d.max(0.0), s, r]
+    } else if yao_weights {
+        if f.yao.iter().any(Option::is_some) {
+            normalise(f.yao.map(|w| w.unwrap_or(0.0)))
+        } else {
+            f.yao_flag.unwrap_or(Kind::Diffuse).weights()
+        }
+    } else if let Some(w) = f.weights {
+        normalise(w)
+    } else if f.per.iter().any(Option::is_some) {
+        normalise(f.per.map(|w| w.unwrap_or(0.0)))
+    } else if f.reflective.is_some() || f.transmissive.is_some() {
+        let s = f.reflective.unwrap_or(0.0).max(0.0);
+        let r = f.transmissive.unwrap_or(0.0).max(0.0);
+        normalise([(1.0 - s - r).max(0.0), s, r])
+    } else {
+        kind.unwrap_or(Kind::Diffuse).weights()
+    };
+    let ior = match ior {
+        Some(n) if n > 0.0 => n,
+        Some(n) => {
+            context.warn(
+                location,
+                format!("refractive index {n} is not positive; using 1.5"),
+            )?;
+            1.5
+        }
+        None => 1.5,
+    };
+    Ok(MaterialSpec {
+        material: Material {
+            color,
+            emission,
+            diffuse: weights[0],
+            specular: weights[1],
+            refract: weights[2],
+            ior,
+            texture: None,
+            normal_map: None,
+            roughness: f.roughness.max(0.0),
+        },
+        texture: f.texture,
+        normal_map: f.normal_map,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::LoadOptions;
+    use crate::scene::build::build;
+    use crate::scene::parse::parse;
+    use std::path::Path;
+
+    fn materials(body: &str) -> Result<Vec<Material>, String> {
+        let text = format!("PerspectiveCamera {{ width 2 height 2 }}\nMaterials {{\n{body}\n}}");
+        let doc = parse(&text, Path::new("t.txt")).map_err(|e| e.to_string())?;
+        build(&doc, Path::new("t.txt"), &LoadOptions::default())
+            .map(|s| s.materials)
+            .map_err(|e| e.to_string())
+    }
+
+    fn weights(m: &Material) -> [f64; 3] {
+        [m.diffuse, m.specular, m.refract]
+    }
+
+    #[test]
+    fn canonical_rates() {
+        let m = materials("Material { specularRate 0.3 refractRate 0.2 refractiveIndex 1.3 }")
+            .expect("ok");
+        assert!((m[0].diffuse - 0.5).abs() < 1e-12);
+        assert_eq!(m[0].ior, 1.3);
+        let e = materials("Material { diffusionRate 0.5 specularRate 0.3 }").expect_err("sum");
+        assert!(e.contains("t.txt:3:1"), "{e}");
+        let m = materials("Material { color 0 0 0 emission 12 12 12 }").expect("ok");
+        assert_eq!(weights(&m[0]), [1.0, 0.0, 0.0]);
+        assert_eq!(m[0].emission, Color::gray(12.0));
+    }
+
+    #[test]
+    fn dialect_conflicts() {
+        let m = materials("Material { type 1 1 0 refr 1.3 diffuseColor 1 0 0 }").expect("ok");
+        assert_eq!(weights(&m[0]), [0.5, 0.5, 0.0]);
+        assert_eq!(m[0].ior, 1.3);
+        assert_eq!(m[0].color, Color::new(1.0, 0.0, 0.0));
+        let m = materials("Material { diff 0 refl 0 refr 1 emissionColor 1 1 1 }").expect("ok");
+        assert_eq!(weights(&m[0]), [0.0, 0.0, 1.0]);
+        assert_eq!(m[0].ior, 1.5);
+        let m = materials("PhongMaterial { type REFR refractive_rate 1.4 }").expect("ok");
+        assert_eq!(weights(&m[0]), [0.0, 0.0, 1.0]);
+        let m = materials("Material { attenuation 1 1 1 specularColor 4 4 4 type 3 }").expect("ok");
+        assert_eq!(m[0].emission, Color::gray(4.0));
+        let m = materials("Material { diffuseColor 1 1 1 specularColor 1 1 1 shininess 20}")
+            .expect("ok");
+        assert_eq!(m[0].emission, Color::BLACK);
+        assert_eq!(weights(&m[0]), [1.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn count_mismatch_is_a_warning_and_unknown_keys_are_skipped() {
+        let text = "PerspectiveCamera { width 2 height 2 }\nMaterials { numMaterials 3\n Material { wobble 1 2 color 1 0 0 } }";
+        let doc = parse(text, Path::new("t.txt")).expect("parses");
+        let scene = build(&doc, Path::new("t.txt"), &LoadOptions::default()).expect("builds");
+        assert_eq!(scene.warnings.len(), 2);
+        assert_eq!(
+            scene.warnings[0].location,
+            Location {
+                line: 3,
+                column: 13
+            }
+        );
+        assert_eq!(scene.materials[0].color, Color::new(1.0, 0.0, 0.0));
+        let strict = LoadOptions {
+            strict: true,
+            ..LoadOptions::default()
+        };
+        assert!(build(&doc, Path::new("t.txt"), &strict).is_err());
+    }
+}

@@ -1,0 +1,199 @@
+//! Build stage: syntax tree -> `Scene` (dialects, names, files, validation).
+
+mod camera;
+mod cursor;
+mod dialect;
+mod lights;
+mod material;
+mod obj;
+mod objects;
+mod paths;
+mod shapes;
+mod textures;
+
+use std::path::Path;
+
+use crate::color::Color;
+use crate::scene::LoadOptions;
+use crate::scene::ast::{Block, Document, ItemKind};
+use crate::scene::error::{Diagnostic, Location, SceneError};
+use crate::scene::model::{Material, Object, Scene};
+
+pub use cursor::Cursor;
+pub use dialect::detect_dialect;
+
+/// State shared by every build step: where we are, what went wrong so far.
+pub struct Context<'a> {
+    pub file: &'a Path,
+    pub options: &'a LoadOptions,
+    pub dialect: crate::scene::model::Dialect,
+    pub warnings: Vec<Diagnostic>,
+    pub unsupported: Vec<String>,
+}
+
+impl Context<'_> {
+    pub fn error(&self, location: Location, message: String) -> SceneError {
+        SceneError::At(self.diagnostic(location, message))
+    }
+
+    fn diagnostic(&self, location: Location, message: String) -> Diagnostic {
+        Diagnostic {
+            file: self.file.to_path_buf(),
+            location,
+            message,
+        }
+    }
+
+    /// Records a warning; in strict mode the warning is returned as the error.
+    pub fn warn(&mut self, location: Location, message: String) -> Result<(), SceneError> {
+        if self.options.strict {
+            return Err(self.error(location, message));
+        }
+        self.warnings.push(self.diagnostic(location, message));
+        Ok(())
+    }
+
+    /// Notes a feature the renderer does not implement (once per note).
+    pub fn unsupported(&mut self, note: &str) {
+        if !self.unsupported.iter().any(|n| n == note) {
+            self.unsupported.push(note.to_string());
+        }
+    }
+
+    /// Skips an unknown key and the numbers after it, with a warning.
+    pub fn skip_field(
+        &mut self,
+        cursor: &mut Cursor,
+        key: &str,
+        location: Location,
+        block: &str,
+    ) -> Result<(), SceneError> {
+        cursor.take_numbers();
+        self.warn(
+            location,
+            format!("unknown field '{key}' in {block}, skipped"),
+        )
+    }
+
+    /// Handles an item that is not a key: a nested block or a stray value.
+    pub fn skip_item(
+        &mut self,
+        item: &crate::scene::ast::Item,
+        block: &str,
+    ) -> Result<(), SceneError> {
+        match &item.kind {
+            ItemKind::Block(b) => self.warn(
+                item.location,
+                format!("unknown block '{}' in {block}, skipped", b.name),
+            ),
+            ItemKind::Word(w) if w == "-" => Ok(()),
+            _ => self.warn(
+                item.location,
+                format!("unexpected {} in {block}, skipped", item.describe()),
+            ),
+        }
+    }
+}
+
+/// Builds a scene from a parsed document. `file` locates messages and relative paths.
+pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<Scene, SceneError> {
+    let dialect = options.dialect.unwrap_or_else(|| detect_dialect(document));
+    let mut context = Context {
+        file,
+        options,
+        dialect,
+        warnings: Vec::new(),
+        unsupported: Vec::new(),
+    };
+    let mut camera_block = None;
+    let mut background = Color::BLACK;
+    let mut material_blocks: Vec<&Block> = Vec::new();
+    let mut group_blocks: Vec<(&Block, Location)> = Vec::new();
+    let mut lights = Vec::new();
+    for item in &document.items {
+        let Some(block) = item.block() else {
+            context.skip_item(item, "the file")?;
+            continue;
+        };
+        match block.name.as_str() {
+            "PerspectiveCamera" | "DepthCamera" | "LensCamera" | "RealCamera"
+            | "OrthographicCamera" | "FisheyeCamera" => {
+                if camera_block.is_some() {
+                    context.warn(
+                        item.location,
+                        "a second camera block replaces the first".into(),
+                    )?;
+                }
+                camera_block = Some((block, item.location));
+            }
+            "Lights" | "DiskLights" => lights.extend(lights::build_lights(&mut context, block)?),
+            "Background" => background = build_background(&mut context, block)?,
+            "Materials" => material_blocks.push(block),
+            "Group" => group_blocks.push((block, item.location)),
+            "Textures" => context.unsupported("texture tables (Textures { ... }) are ignored"),
+            "Global" => context.unsupported("render settings in the scene (Global) are ignored"),
+            "Objects" => context.unsupported("object instance tables (Objects) are ignored"),
+            other => context.warn(
+                item.location,
+                format!("unknown top-level block '{other}', skipped"),
+            )?,
+        }
+    }
+    let Some((camera_block, camera_location)) = camera_block else {
+        return Err(context.error(
+            Location { line: 1, column: 1 },
+            "the file has no camera block (PerspectiveCamera)".into(),
+        ));
+    };
+    let camera = camera::build_camera(&mut context, camera_block, camera_location)?;
+    let mut specs = Vec::new();
+    for block in material_blocks {
+        specs.extend(material::build_materials(&mut context, block)?);
+    }
+    if specs.is_empty() {
+        specs.push(material::MaterialSpec::new(Material::default()));
+    }
+    let mut objects = objects::ObjectBuilder::new(specs.len());
+    let mut roots = Vec::new();
+    for (block, location) in group_blocks {
+        roots.push(objects.group(&mut context, block, location)?);
+    }
+    let root = match roots.len() {
+        1 => roots.pop().unwrap_or(Object::Group(Vec::new())),
+        _ => Object::Group(roots),
+    };
+    let (materials, textures) = textures::load_textures(&mut context, specs, &root)?;
+    Ok(Scene {
+        camera,
+        background,
+        materials,
+        textures,
+        lights,
+        root,
+        dialect,
+        warnings: context.warnings,
+        unsupported: context.unsupported,
+    })
+}
+
+fn build_background(context: &mut Context, block: &Block) -> Result<Color, SceneError> {
+    let mut color = Color::BLACK;
+    let mut cursor = Cursor::of(block);
+    while let Some(item) = cursor.next() {
+        match item.word() {
+            Some("color") => {
+                let c = cursor.vec3(context, "color")?;
+                color = Color::new(c.x, c.y, c.z);
+            }
+            Some("cubeMap") | Some("texture") => {
+                context.unsupported("background images and cube maps are ignored");
+                if matches!(cursor.peek().map(|i| &i.kind), Some(ItemKind::Word(_))) {
+                    cursor.next();
+                }
+            }
+            Some(key) => context.skip_field(&mut cursor, key, item.location, "Background")?,
+            None => context.skip_item(item, "Background")?,
+        }
+    }
+    Ok(color)
+}

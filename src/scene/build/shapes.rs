@@ -1,0 +1,299 @@
+//! Leaf shapes: spheres (static and moving), planes, triangles, rectangles, disks.
+
+use crate::math::{Point3, Vec3, orthonormal_basis};
+use crate::scene::ast::Block;
+use crate::scene::build::{Context, Cursor};
+use crate::scene::error::{Location, SceneError};
+use crate::scene::model::Object;
+
+/// The `key numbers*` fields of a shape block, with where each one was written.
+pub struct Fields<'a> {
+    block: &'a Block,
+    location: Location,
+    entries: Vec<(&'a str, Vec<f64>, Location)>,
+}
+
+impl<'a> Fields<'a> {
+    /// Reads every field; keys not in `known` are skipped with a warning.
+    pub fn read(
+        context: &mut Context,
+        block: &'a Block,
+        location: Location,
+        known: &[&str],
+    ) -> Result<Self, SceneError> {
+        let mut entries = Vec::new();
+        let mut cursor = Cursor::of(block);
+        while let Some(item) = cursor.next() {
+            match item.word() {
+                Some(key) if known.contains(&key) => {
+                    let numbers = cursor.take_numbers();
+                    entries.push((key, numbers, cursor.here()));
+                }
+                Some(key) => context.skip_field(&mut cursor, key, item.location, &block.name)?,
+                None => context.skip_item(item, &block.name)?,
+            }
+        }
+        Ok(Fields {
+            block,
+            location,
+            entries,
+        })
+    }
+
+    pub fn has(&self, key: &str) -> bool {
+        self.entries.iter().any(|(k, _, _)| *k == key)
+    }
+
+    /// The numbers of the last `key` field, at least `count` of them, all finite.
+    fn numbers(&self, context: &Context, key: &str, count: usize) -> Result<&[f64], SceneError> {
+        let Some((_, numbers, after)) = self.entries.iter().rev().find(|(k, _, _)| *k == key)
+        else {
+            return Err(context.error(self.location, format!("{} needs '{key}'", self.block.name)));
+        };
+        match numbers.get(..count) {
+            Some(values) if values.iter().all(|v| v.is_finite()) => Ok(values),
+            Some(_) => Err(context.error(*after, format!("a number after '{key}' is too large"))),
+            None => Err(context.error(
+                *after,
+                format!(
+                    "expected {count} numbers after '{key}', found {}",
+                    numbers.len()
+                ),
+            )),
+        }
+    }
+
+    pub fn number(&self, context: &Context, key: &str) -> Result<f64, SceneError> {
+        Ok(self
+            .numbers(context, key, 1)?
+            .first()
+            .copied()
+            .unwrap_or(0.0))
+    }
+
+    pub fn vec3(&self, context: &Context, key: &str) -> Result<Vec3, SceneError> {
+        let v = self.numbers(context, key, 3)?;
+        Ok(Vec3::new(v[0], v[1], v[2]))
+    }
+
+    pub fn vec3_or(&self, context: &Context, key: &str, default: Vec3) -> Result<Vec3, SceneError> {
+        if self.has(key) {
+            self.vec3(context, key)
+        } else {
+            Ok(default)
+        }
+    }
+
+    fn nonzero(&self, context: &Context, key: &str) -> Result<Vec3, SceneError> {
+        let v = self.vec3(context, key)?;
+        if v.norm() < 1e-300 {
+            return Err(context.error(self.location, format!("'{key}' must not be zero")));
+        }
+        Ok(v)
+    }
+}
+
+/// Builds a shape block; `None` when the name is not a shape.
+pub fn build_shape(
+    context: &mut Context,
+    block: &Block,
+    location: Location,
+    material: usize,
+) -> Result<Option<Object>, SceneError> {
+    let read =
+        |context: &mut Context, known: &[&str]| Fields::read(context, block, location, known);
+    let object = match block.name.as_str() {
+        "Sphere" => {
+            let f = read(
+                context,
+                &["center", "radius", "moveVector", "speed", "motion"],
+            )?;
+            let mut motion = Vec3::zeros();
+            for key in ["moveVector", "speed", "motion"] {
+                motion = f.vec3_or(context, key, motion)?;
+            }
+            Object::Sphere {
+                center: f.vec3(context, "center")?,
+                radius: f.number(context, "radius")?.abs(),
+                motion,
+                material,
+            }
+        }
+        "MovingSphere" | "MovingObj" => {
+            let f = read(context, &["center0", "center1", "time0", "time1", "radius"])?;
+            let start = f.vec3(context, "center0")?;
+            Object::Sphere {
+                center: start,
+                radius: f.number(context, "radius")?.abs(),
+                motion: f.vec3(context, "center1")? - start,
+                material,
+            }
+        }
+        "MotionSphere" => {
+            let f = read(
+                context,
+                &["origCenter", "center", "radius", "tStart", "tEnd"],
+            )?;
+            let start = f.vec3(context, "origCenter")?;
+            Object::Sphere {
+                center: start,
+                radius: f.number(context, "radius")?.abs(),
+                motion: f.vec3(context, "center")? - start,
+                material,
+            }
+        }
+        "Plane" => {
+            let f = read(context, &["normal", "offset", "scale"])?;
+            Object::Plane {
+                normal: f.nonzero(context, "normal")?,
+                offset: f.number(context, "offset")?,
+                material,
+            }
+        }
+        "FinitePlane" => {
+            let f = read(context, &["normal", "offset", "size"])?;
+            let normal = f.nonzero(context, "normal")?;
+            let size = f.numbers(context, "size", 2)?;
+            let (u, v) = orthonormal_basis(&normal.normalize());
+            let center = normal * (f.number(context, "offset")? / normal.norm_squared());
+            let (edge_u, edge_v) = (u * size[0], v * size[1]);
+            Object::Rectangle {
+                origin: center - edge_u / 2.0 - edge_v / 2.0,
+                edge_u,
+                edge_v,
+                material,
+            }
+        }
+        "Triangle" => {
+            let f = read(context, &["vertex0", "vertex1", "vertex2"])?;
+            Object::Triangle {
+                vertices: [
+                    f.vec3(context, "vertex0")?,
+                    f.vec3(context, "vertex1")?,
+                    f.vec3(context, "vertex2")?,
+                ],
+                material,
+            }
+        }
+        "Quad" => {
+            let f = read(context, &["origin", "u", "v"])?;
+            Object::Rectangle {
+                origin: f.vec3(context, "origin")?,
+                edge_u: f.vec3(context, "u")?,
+                edge_v: f.vec3(context, "v")?,
+                material,
+            }
+        }
+        "Rectangle" => rectangle(context, block, location, material)?,
+        "XYRectangle" | "XZRectangle" | "YZRectangle" => {
+            let f = read(context, &["points", "offset", "normal"])?;
+            let p = f.numbers(context, "points", 4)?;
+            let k = f.number(context, "offset")?;
+            let sign = if f.has("normal") {
+                f.number(context, "normal")?
+            } else {
+                1.0
+            };
+            let (origin, mut edge_u, mut edge_v) = match block.name.as_str() {
+                "XYRectangle" => (
+                    Point3::new(p[0], p[1], k),
+                    Vec3::new(p[2] - p[0], 0.0, 0.0),
+                    Vec3::new(0.0, p[3] - p[1], 0.0),
+                ),
+                "XZRectangle" => (
+                    Point3::new(p[0], k, p[1]),
+                    Vec3::new(p[2] - p[0], 0.0, 0.0),
+                    Vec3::new(0.0, 0.0, p[3] - p[1]),
+                ),
+                _ => (
+                    Point3::new(k, p[0], p[1]),
+                    Vec3::new(0.0, p[2] - p[0], 0.0),
+                    Vec3::new(0.0, 0.0, p[3] - p[1]),
+                ),
+            };
+            let axis = match block.name.as_str() {
+                "XYRectangle" => Vec3::z(),
+                "XZRectangle" => Vec3::y(),
+                _ => Vec3::x(),
+            };
+            if edge_u.cross(&edge_v).dot(&axis) * sign < 0.0 {
+                std::mem::swap(&mut edge_u, &mut edge_v);
+            }
+            Object::Rectangle {
+                origin,
+                edge_u,
+                edge_v,
+                material,
+            }
+        }
+        "Disk" => {
+            let f = read(context, &["center", "normal", "radius"])?;
+            Object::Disk {
+                center: f.vec3(context, "center")?,
+                normal: f.nonzero(context, "normal")?,
+                radius: f.number(context, "radius")?.abs(),
+                material,
+            }
+        }
+        _ => return Ok(None),
+    };
+    Ok(Some(object))
+}
+
+/// The three incompatible `Rectangle` forms, told apart by their first field.
+fn rectangle(
+    context: &mut Context,
+    block: &Block,
+    location: Location,
+    material: usize,
+) -> Result<Object, SceneError> {
+    let first = block.items.iter().find_map(|i| i.word()).unwrap_or("point");
+    match first {
+        "x0" | "y0" | "x1" | "y1" | "k" | "n" | "d" => {
+            let f = Fields::read(
+                context,
+                block,
+                location,
+                &["x0", "y0", "x1", "y1", "n", "d", "k"],
+            )?;
+            let (x0, y0) = (f.number(context, "x0")?, f.number(context, "y0")?);
+            let (x1, y1) = (f.number(context, "x1")?, f.number(context, "y1")?);
+            let z = if f.has("d") {
+                f.number(context, "d")?
+            } else {
+                f.number(context, "k")?
+            };
+            Ok(Object::Rectangle {
+                origin: Point3::new(x0, y0, z),
+                edge_u: Vec3::new(x1 - x0, 0.0, 0.0),
+                edge_v: Vec3::new(0.0, y1 - y0, 0.0),
+                material,
+            })
+        }
+        "center" | "dirLen" | "dirWid" | "len" | "wid" => {
+            let f = Fields::read(
+                context,
+                block,
+                location,
+                &["center", "dirLen", "dirWid", "len", "wid"],
+            )?;
+            let along = f.nonzero(context, "dirLen")?.normalize() * f.number(context, "len")?;
+            let across = f.nonzero(context, "dirWid")?.normalize() * f.number(context, "wid")?;
+            Ok(Object::Rectangle {
+                origin: f.vec3(context, "center")? - along / 2.0 - across / 2.0,
+                edge_u: along,
+                edge_v: across,
+                material,
+            })
+        }
+        _ => {
+            let f = Fields::read(context, block, location, &["point", "x", "y"])?;
+            Ok(Object::Rectangle {
+                origin: f.vec3(context, "point")?,
+                edge_u: f.vec3(context, "x")?,
+                edge_v: f.vec3(context, "y")?,
+                material,
+            })
+        }
+    }
+}
