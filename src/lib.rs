@@ -5,7 +5,9 @@
 //! scene text -> syntax tree -> built [`scene::model::Scene`] -> [`world::World`]
 //! -> camera rays -> integrator samples -> film -> image file.
 
+pub mod accel;
 pub mod color;
+pub mod geometry;
 pub mod image_io;
 pub mod math;
 pub mod rng;
