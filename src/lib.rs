@@ -7,10 +7,12 @@
 //! [`image_io`] file. [`render::render`] is the only parallel code;
 //! [`metrics`] compares images (RMSE, relative MSE, PSNR, SSIM).
 
+pub mod accel;
 pub mod camera;
 pub mod color;
 pub mod converge;
 pub mod film;
+pub mod geometry;
 pub mod image_io;
 pub mod integrator;
 pub mod math;

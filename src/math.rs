@@ -125,6 +125,78 @@ impl Aabb {
         }
         if near <= far { Some(near) } else { None }
     }
+
+    /// Slab test returning the clipped parameter interval `(near, far)` of the ray
+    /// inside the box, within `(t_min, t_max)`.
+    #[inline]
+    pub fn clip(
+        &self,
+        origin: &Point3,
+        inverse_direction: &Vec3,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<(f64, f64)> {
+        let mut near = t_min;
+        let mut far = t_max;
+        for axis in 0..3 {
+            let t0 = (self.min[axis] - origin[axis]) * inverse_direction[axis];
+            let t1 = (self.max[axis] - origin[axis]) * inverse_direction[axis];
+            let (lo, hi) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
+            if lo > near {
+                near = lo;
+            }
+            if hi < far {
+                far = hi;
+            }
+        }
+        if near <= far { Some((near, far)) } else { None }
+    }
+
+    /// The box grown by `margin` on every side.
+    pub fn expanded(&self, margin: f64) -> Self {
+        Aabb {
+            min: self.min - Vec3::repeat(margin),
+            max: self.max + Vec3::repeat(margin),
+        }
+    }
+
+    /// Whether all coordinates are finite and `min <= max`.
+    pub fn is_valid(&self) -> bool {
+        self.min
+            .iter()
+            .chain(self.max.iter())
+            .all(|c| c.is_finite())
+            && !self.is_empty()
+    }
+}
+
+/// Relative size of the offset applied by [`offset_origin`] (2^-40, about 4000 ulps).
+pub const OFFSET_SCALE: f64 = 1.0 / (1u64 << 40) as f64;
+
+/// Where to start a ray spawned from a surface point so that it does not hit the
+/// surface it leaves.
+///
+/// The point is moved along the geometric normal `normal` (unit, either side) to the
+/// side that `direction` goes to, by `OFFSET_SCALE * (max |p_i| + 1e-3 * OFFSET_SCALE)`:
+/// a distance relative to the magnitude of the coordinates, which bounds the
+/// rounding error of a hit point reconstructed from surface parameters (and of
+/// transforming it between object and world space). It is scale-free: objects of
+/// size 1e-3 or placed at 1e5 behave alike. Rays spawned this way may use `t_min = 0`.
+#[inline]
+pub fn offset_origin(point: &Point3, normal: &Vec3, direction: &Vec3) -> Point3 {
+    let magnitude = point.amax();
+    let distance = OFFSET_SCALE * magnitude + 1e-3 * OFFSET_SCALE * OFFSET_SCALE;
+    if normal.dot(direction) >= 0.0 {
+        point + normal * distance
+    } else {
+        point - normal * distance
+    }
+}
+
+/// `1 / direction` per component (`±inf` for zero components, never NaN).
+#[inline]
+pub fn inverse_direction(direction: &Vec3) -> Vec3 {
+    direction.map(|c| 1.0 / c)
 }
 
 /// Applies the affine part of `matrix` to a point.

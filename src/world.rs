@@ -1,8 +1,16 @@
 //! The renderable world: the scene's object tree flattened into primitives with
 //! a BVH over the bounded ones. Answers the two ray queries of the integrators.
 
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use crate::accel::Bvh;
+use crate::geometry::{
+    Disk, Intersection, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, SurfaceHit, Transform,
+    Triangle,
+};
 use crate::math::{Aabb, Point3, Ray, Vec3};
-use crate::scene::model::Scene;
+use crate::scene::model::{Object, Scene};
 
 /// How a hit's `uv` is meant to be read by a texture lookup.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -28,28 +36,262 @@ pub struct WorldHit {
     pub uv: [f64; 2],
     pub uv_mapping: UvMapping,
     pub material: usize,
+    /// Index of the primitive in the world (see [`World::primitive`]).
+    pub primitive: usize,
+    /// Element within the primitive (triangle of a mesh), else 0.
+    pub element: u32,
 }
 
-/// The flattened scene geometry.
-pub struct World {}
+/// One shape with its material and optional object-to-world transform.
+#[derive(Clone, Debug)]
+pub struct Primitive {
+    pub shape: Shape,
+    /// `None` for the identity.
+    pub transform: Option<Box<Transform>>,
+    pub material: usize,
+}
+
+impl Primitive {
+    #[inline]
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
+        match &self.transform {
+            None => self.shape.intersect(ray, t_min, t_max),
+            Some(transform) => self
+                .shape
+                .intersect(&transform.ray_to_object(ray), t_min, t_max),
+        }
+    }
+
+    #[inline]
+    pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        match &self.transform {
+            None => self.shape.occluded(ray, t_min, t_max),
+            Some(transform) => self
+                .shape
+                .occluded(&transform.ray_to_object(ray), t_min, t_max),
+        }
+    }
+
+    /// The world-space surface of a hit found by [`Primitive::intersect`].
+    pub fn surface(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
+        match &self.transform {
+            None => self.shape.surface(ray, hit),
+            Some(transform) => {
+                let local = self.shape.surface(&transform.ray_to_object(ray), hit);
+                transform.surface_to_world(&local)
+            }
+        }
+    }
+
+    /// World-space bounds; `None` when unbounded.
+    pub fn bounds(&self) -> Option<Aabb> {
+        let local = self.shape.bounds()?;
+        Some(match &self.transform {
+            None => local,
+            Some(transform) => transform.bounds_to_world(&local),
+        })
+    }
+}
+
+/// The flattened scene geometry. Immutable after `build`, hence `Send + Sync`.
+pub struct World {
+    primitives: Vec<Primitive>,
+    /// Indices of the bounded primitives, in BVH leaf order of `bvh`.
+    bounded: Vec<u32>,
+    /// Indices of the unbounded primitives (planes), tested linearly.
+    unbounded: Vec<u32>,
+    bvh: Bvh,
+}
 
 impl World {
-    pub fn build(_scene: &Scene) -> World {
-        todo!("geometry helper")
+    /// Flattens the object tree: nested transforms are composed (identities are
+    /// dropped), each distinct mesh (`Arc` identity) gets one triangle BVH shared by
+    /// its instances, and a top-level BVH is built over the bounded primitives.
+    /// Degenerate shapes (zero radius, zero normal, zero area, unusable profiles)
+    /// are dropped.
+    pub fn build(scene: &Scene) -> World {
+        let mut builder = Builder::default();
+        builder.visit(&scene.root, None);
+        World::from_primitives(builder.primitives)
+    }
+
+    /// A world over already made primitives.
+    pub fn from_primitives(primitives: Vec<Primitive>) -> World {
+        let mut bounded = Vec::new();
+        let mut unbounded = Vec::new();
+        let mut boxes = Vec::new();
+        for (index, primitive) in primitives.iter().enumerate() {
+            if primitive.shape.is_bounded() {
+                if let Some(b) = primitive.bounds() {
+                    bounded.push(index as u32);
+                    boxes.push(b);
+                }
+            } else {
+                unbounded.push(index as u32);
+            }
+        }
+        let bvh = Bvh::build(&boxes);
+        World {
+            primitives,
+            bounded,
+            unbounded,
+            bvh,
+        }
+    }
+
+    pub fn primitives(&self) -> &[Primitive] {
+        &self.primitives
+    }
+
+    pub fn primitive(&self, index: usize) -> &Primitive {
+        &self.primitives[index]
     }
 
     /// The nearest hit with `t_min < t < t_max`.
-    pub fn intersect(&self, _ray: &Ray, _t_min: f64, _t_max: f64) -> Option<WorldHit> {
-        todo!("geometry helper")
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<WorldHit> {
+        let mut best: Option<(usize, Intersection)> = None;
+        let mut limit = t_max;
+        for &index in &self.unbounded {
+            let index = index as usize;
+            if let Some(hit) = self.primitives[index].intersect(ray, t_min, limit) {
+                limit = hit.t;
+                best = Some((index, hit));
+            }
+        }
+        self.bvh.traverse(ray, t_min, limit, |slot, limit| {
+            let index = self.bounded[slot] as usize;
+            let hit = self.primitives[index].intersect(ray, t_min, limit)?;
+            best = Some((index, hit));
+            Some(hit.t)
+        });
+        let (index, hit) = best?;
+        let primitive = &self.primitives[index];
+        let surface = primitive.surface(ray, &hit);
+        debug_assert!(surface.point.iter().all(|c| c.is_finite()));
+        Some(WorldHit {
+            t: hit.t,
+            point: surface.point,
+            geometric_normal: surface.geometric_normal,
+            shading_normal: surface.shading_normal,
+            tangent: surface.tangent,
+            uv: surface.uv,
+            uv_mapping: surface.uv_mapping,
+            material: primitive.material,
+            primitive: index,
+            element: hit.index,
+        })
     }
 
     /// Whether anything lies on the ray with `t_min < t < t_max`.
-    pub fn occluded(&self, _ray: &Ray, _t_min: f64, _t_max: f64) -> bool {
-        todo!("geometry helper")
+    pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        self.unbounded
+            .iter()
+            .any(|&index| self.primitives[index as usize].occluded(ray, t_min, t_max))
+            || self.bvh.any(ray, t_min, t_max, |slot| {
+                self.primitives[self.bounded[slot] as usize].occluded(ray, t_min, t_max)
+            })
     }
 
     /// Bounds of the bounded primitives (planes excluded).
     pub fn bounds(&self) -> Aabb {
-        todo!("geometry helper")
+        self.bvh.bounds()
+    }
+}
+
+#[derive(Default)]
+struct Builder {
+    primitives: Vec<Primitive>,
+    /// One geometry mesh per distinct `MeshData` allocation.
+    meshes: HashMap<*const crate::scene::model::MeshData, Arc<Mesh>>,
+}
+
+impl Builder {
+    fn visit(&mut self, object: &Object, transform: Option<&Transform>) {
+        let shape = match object {
+            Object::Group(children) => {
+                for child in children {
+                    self.visit(child, transform);
+                }
+                return;
+            }
+            Object::Transform {
+                matrix,
+                inverse,
+                child,
+            } => {
+                let local = Transform::new(*matrix, *inverse);
+                let combined = match transform {
+                    Some(parent) => parent.compose(&local),
+                    None => local,
+                };
+                self.visit(child, Some(&combined));
+                return;
+            }
+            Object::Sphere {
+                center,
+                radius,
+                motion,
+                ..
+            } => (*radius != 0.0 && radius.is_finite())
+                .then(|| Shape::Sphere(Sphere::new(*center, *radius, *motion))),
+            Object::Plane { normal, offset, .. } => Plane::new(*normal, *offset).map(Shape::Plane),
+            Object::Triangle { vertices, .. } => Some(Shape::Triangle(Triangle::new(*vertices))),
+            Object::Rectangle {
+                origin,
+                edge_u,
+                edge_v,
+                ..
+            } => Rectangle::new(*origin, *edge_u, *edge_v).map(Shape::Rectangle),
+            Object::Disk {
+                center,
+                normal,
+                radius,
+                ..
+            } => Disk::new(*center, *normal, *radius).map(Shape::Disk),
+            Object::Mesh { mesh, smooth, .. } => {
+                let shared = self
+                    .meshes
+                    .entry(Arc::as_ptr(mesh))
+                    .or_insert_with(|| Arc::new(Mesh::new(Arc::clone(mesh))));
+                Some(Shape::Mesh {
+                    mesh: Arc::clone(shared),
+                    smooth: *smooth,
+                })
+            }
+            Object::Revolution { profile, .. } => {
+                Revolution::new(profile).map(|r| Shape::Revolution(Arc::new(r)))
+            }
+        };
+        let material = match object {
+            Object::Sphere { material, .. }
+            | Object::Plane { material, .. }
+            | Object::Triangle { material, .. }
+            | Object::Rectangle { material, .. }
+            | Object::Disk { material, .. }
+            | Object::Mesh { material, .. }
+            | Object::Revolution { material, .. } => *material,
+            Object::Group(_) | Object::Transform { .. } => 0,
+        };
+        if let Some(shape) = shape {
+            let transform = transform
+                .filter(|t| !t.is_identity())
+                .map(|t| Box::new(t.clone()));
+            self.primitives.push(Primitive {
+                shape,
+                transform,
+                material,
+            });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn world_is_send_and_sync() {
+        fn check<T: Send + Sync>() {}
+        check::<World>();
     }
 }

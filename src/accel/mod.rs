@@ -1,0 +1,5 @@
+//! Acceleration structures for ray queries.
+
+pub mod bvh;
+
+pub use bvh::Bvh;

@@ -1,0 +1,117 @@
+//! Triangle meshes with their own BVH; smooth normals and uvs when the file has them.
+//! One `Mesh` is built per distinct `MeshData` and shared by all its instances.
+
+use std::sync::Arc;
+
+use super::triangle::{intersect_vertices, surface_vertices};
+use super::{Intersection, SurfaceHit, normalize_or};
+use crate::accel::Bvh;
+use crate::math::{Aabb, Ray};
+use crate::scene::model::MeshData;
+
+#[derive(Debug)]
+pub struct Mesh {
+    pub data: Arc<MeshData>,
+    bvh: Bvh,
+}
+
+impl Mesh {
+    /// Builds the triangle BVH. Triangles with out-of-range indices are left out.
+    pub fn new(data: Arc<MeshData>) -> Mesh {
+        let count = data.positions.len();
+        let boxes: Vec<Aabb> = data
+            .triangles
+            .iter()
+            .map(|triangle| {
+                if triangle.iter().any(|&i| i as usize >= count) {
+                    return Aabb::empty();
+                }
+                triangle.iter().fold(Aabb::empty(), |b, &i| {
+                    b.include_point(data.positions[i as usize])
+                })
+            })
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        Mesh { data, bvh }
+    }
+
+    pub fn triangle_count(&self) -> usize {
+        self.data.triangles.len()
+    }
+
+    /// Bounds of the (valid) triangles, `None` for an empty mesh.
+    pub fn bounds(&self) -> Option<Aabb> {
+        (!self.bvh.is_empty()).then(|| self.bvh.bounds())
+    }
+
+    /// Nearest triangle hit: `u, v` are barycentrics, `index` the triangle.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
+        let mut best = None;
+        let positions = &self.data.positions;
+        self.bvh.traverse(ray, t_min, t_max, |index, t_max| {
+            let [a, b, c] = self.data.triangles[index];
+            let (t, b1, b2) = intersect_vertices(
+                &positions[a as usize],
+                &positions[b as usize],
+                &positions[c as usize],
+                ray,
+                t_min,
+                t_max,
+            )?;
+            best = Some(Intersection {
+                t,
+                u: b1,
+                v: b2,
+                index: index as u32,
+            });
+            Some(t)
+        });
+        best
+    }
+
+    /// Whether any triangle lies on the ray within `(t_min, t_max)`.
+    pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        let positions = &self.data.positions;
+        self.bvh.any(ray, t_min, t_max, |index| {
+            let [a, b, c] = self.data.triangles[index];
+            intersect_vertices(
+                &positions[a as usize],
+                &positions[b as usize],
+                &positions[c as usize],
+                ray,
+                t_min,
+                t_max,
+            )
+            .is_some()
+        })
+    }
+
+    /// The surface at a hit; `smooth` interpolates the vertex normals when present.
+    pub fn surface(&self, _ray: &Ray, hit: &Intersection, smooth: bool) -> SurfaceHit {
+        let [a, b, c] = self.data.triangles[hit.index as usize].map(|i| i as usize);
+        let p = &self.data.positions;
+        let (b1, b2) = (hit.u, hit.v);
+        let b0 = 1.0 - b1 - b2;
+        let mut surface = surface_vertices(&p[a], &p[b], &p[c], b1, b2);
+        if let Some(uvs) = self.data.uvs.as_ref().filter(|uvs| uvs.len() == p.len()) {
+            let (t0, t1, t2) = (uvs[a], uvs[b], uvs[c]);
+            surface.uv = [
+                b0 * t0[0] + b1 * t1[0] + b2 * t2[0],
+                b0 * t0[1] + b1 * t1[1] + b2 * t2[1],
+            ];
+            // dp/du from the uv parametrisation (pbrt's triangle tangent).
+            let (du1, dv1) = (t1[0] - t0[0], t1[1] - t0[1]);
+            let (du2, dv2) = (t2[0] - t0[0], t2[1] - t0[1]);
+            let determinant = du1 * dv2 - dv1 * du2;
+            if determinant.abs() > 1e-300 {
+                let dpdu = ((p[b] - p[a]) * dv2 - (p[c] - p[a]) * dv1) / determinant;
+                surface.tangent = normalize_or(dpdu, surface.tangent);
+            }
+        }
+        if smooth && let Some(normals) = self.data.normals.as_ref().filter(|n| n.len() == p.len()) {
+            let n = normals[a] * b0 + normals[b] * b1 + normals[c] * b2;
+            surface.shading_normal = normalize_or(n, surface.geometric_normal);
+        }
+        surface
+    }
+}

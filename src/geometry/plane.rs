@@ -1,0 +1,80 @@
+//! Infinite planes `normal . p = offset` with a tiled uv frame derived from the normal.
+
+use super::{Intersection, SurfaceHit};
+use crate::math::{Point3, Ray, Vec3, orthonormal_basis};
+use crate::world::UvMapping;
+
+/// Texels per world unit of the tiled plane mapping (the original's default).
+pub const PLANE_TILING: f64 = 10.0;
+
+#[derive(Clone, Copy, Debug)]
+pub struct Plane {
+    /// Unit normal.
+    pub normal: Vec3,
+    /// Signed distance of the plane from the origin along `normal`.
+    pub offset: f64,
+    /// Deterministic texture frame (e1, e2) from the normal.
+    frame: (Vec3, Vec3),
+}
+
+impl Plane {
+    /// `None` when the normal is zero or not finite.
+    pub fn new(normal: Vec3, offset: f64) -> Option<Plane> {
+        let length = normal.norm();
+        if !(length > 0.0 && length.is_finite() && offset.is_finite()) {
+            return None;
+        }
+        let normal = normal / length;
+        Some(Plane {
+            normal,
+            offset: offset / length,
+            frame: orthonormal_basis(&normal),
+        })
+    }
+
+    #[inline]
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
+        let denominator = self.normal.dot(&ray.direction);
+        if denominator == 0.0 {
+            return None;
+        }
+        let t = (self.offset - self.normal.dot(&ray.origin)) / denominator;
+        (t > t_min && t < t_max).then(|| Intersection::new(t, 0.0, 0.0))
+    }
+
+    pub fn surface(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
+        let raw: Point3 = ray.at(hit.t);
+        // Project onto the plane so the point's error is relative to |point|.
+        let point = raw - self.normal * (self.normal.dot(&raw) - self.offset);
+        let (e1, e2) = self.frame;
+        SurfaceHit {
+            point,
+            geometric_normal: self.normal,
+            shading_normal: self.normal,
+            tangent: e1,
+            uv: [PLANE_TILING * point.dot(&e1), PLANE_TILING * point.dot(&e2)],
+            uv_mapping: UvMapping::Tiled,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normal_and_offset_are_normalised_together() {
+        let plane = Plane::new(Vec3::new(0.0, 2.0, 0.0), 4.0).unwrap();
+        let ray = Ray::new(Point3::new(0.3, 10.0, 0.1), -Vec3::y(), 0.0);
+        let hit = plane.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+        assert!((hit.t - 8.0).abs() < 1e-12);
+        assert!(Plane::new(Vec3::zeros(), 1.0).is_none());
+    }
+
+    #[test]
+    fn parallel_ray_misses_without_nan() {
+        let plane = Plane::new(Vec3::y(), 0.0).unwrap();
+        let ray = Ray::new(Point3::new(0.0, 1.0, 0.0), Vec3::x(), 0.0);
+        assert!(plane.intersect(&ray, 0.0, f64::INFINITY).is_none());
+    }
+}

@@ -1,0 +1,74 @@
+//! The closed set of shapes, dispatched by `match` (no trait objects per ray).
+
+use std::sync::Arc;
+
+use super::{Disk, Intersection, Mesh, Plane, Rectangle, Revolution, Sphere, SurfaceHit, Triangle};
+use crate::math::{Aabb, Ray};
+
+#[derive(Clone, Debug)]
+pub enum Shape {
+    Sphere(Sphere),
+    Plane(Plane),
+    Triangle(Triangle),
+    Rectangle(Rectangle),
+    Disk(Disk),
+    /// Shared by every instance of the same mesh data.
+    Mesh {
+        mesh: Arc<Mesh>,
+        smooth: bool,
+    },
+    Revolution(Arc<Revolution>),
+}
+
+impl Shape {
+    #[inline]
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
+        match self {
+            Shape::Sphere(s) => s.intersect(ray, t_min, t_max),
+            Shape::Plane(s) => s.intersect(ray, t_min, t_max),
+            Shape::Triangle(s) => s.intersect(ray, t_min, t_max),
+            Shape::Rectangle(s) => s.intersect(ray, t_min, t_max),
+            Shape::Disk(s) => s.intersect(ray, t_min, t_max),
+            Shape::Mesh { mesh, .. } => mesh.intersect(ray, t_min, t_max),
+            Shape::Revolution(s) => s.intersect(ray, t_min, t_max),
+        }
+    }
+
+    /// Whether anything of the shape lies on the ray within `(t_min, t_max)`.
+    #[inline]
+    pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        match self {
+            Shape::Mesh { mesh, .. } => mesh.occluded(ray, t_min, t_max),
+            _ => self.intersect(ray, t_min, t_max).is_some(),
+        }
+    }
+
+    pub fn surface(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
+        match self {
+            Shape::Sphere(s) => s.surface(ray, hit),
+            Shape::Plane(s) => s.surface(ray, hit),
+            Shape::Triangle(s) => s.surface(ray, hit),
+            Shape::Rectangle(s) => s.surface(ray, hit),
+            Shape::Disk(s) => s.surface(ray, hit),
+            Shape::Mesh { mesh, smooth } => mesh.surface(ray, hit, *smooth),
+            Shape::Revolution(s) => s.surface(ray, hit),
+        }
+    }
+
+    /// Object-space bounds; `None` for unbounded shapes (planes) and empty meshes.
+    pub fn bounds(&self) -> Option<Aabb> {
+        match self {
+            Shape::Sphere(s) => Some(s.bounds()),
+            Shape::Plane(_) => None,
+            Shape::Triangle(s) => Some(s.bounds()),
+            Shape::Rectangle(s) => Some(s.bounds()),
+            Shape::Disk(s) => Some(s.bounds()),
+            Shape::Mesh { mesh, .. } => mesh.bounds(),
+            Shape::Revolution(s) => Some(s.bounds()),
+        }
+    }
+
+    pub fn is_bounded(&self) -> bool {
+        !matches!(self, Shape::Plane(_))
+    }
+}
