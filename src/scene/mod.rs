@@ -37,3 +37,20 @@ pub fn load_scene(path: &Path, options: &LoadOptions) -> Result<Scene, SceneErro
     let document = parse(&text, path)?;
     build(&document, path, options)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn non_utf8_files_and_missing_files_are_errors_not_panics() {
+        let dir = std::env::temp_dir().join(format!("pt-load-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let file = dir.join("bad.txt");
+        std::fs::write(&file, b"PerspectiveCamera { width 2 height 2 \xff\xfe }").expect("write");
+        let scene = load_scene(&file, &LoadOptions::default()).expect("lossy decoding");
+        assert_eq!(scene.warnings.len(), 1);
+        let missing = load_scene(&dir.join("none.txt"), &LoadOptions::default());
+        assert!(matches!(missing, Err(SceneError::Io { .. })));
+    }
+}
