@@ -53,4 +53,20 @@ mod tests {
         let missing = load_scene(&dir.join("none.txt"), &LoadOptions::default());
         assert!(matches!(missing, Err(SceneError::Io { .. })));
     }
+
+    #[test]
+    fn deeply_nested_groups_build() {
+        let depth = parse::MAX_DEPTH - 2;
+        let text = format!(
+            "PerspectiveCamera {{ width 2 height 2 }}\nGroup {{ {} Sphere {{ center 0 0 0 radius 1 }} {} }}",
+            "Transform { Translate 1 0 0 Group { ".repeat(depth / 2),
+            "} }".repeat(depth / 2)
+        );
+        let document = parse(&text, Path::new("deep.txt")).expect("parses");
+        let scene =
+            build(&document, Path::new("deep.txt"), &LoadOptions::default()).expect("builds");
+        let mut leaves = 0;
+        scene.root.for_each_leaf(&mut |_| leaves += 1);
+        assert_eq!(leaves, 1);
+    }
 }
