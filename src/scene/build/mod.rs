@@ -10,6 +10,8 @@ mod objects;
 mod paths;
 mod shapes;
 mod textures;
+mod transform;
+mod weights;
 
 use std::path::Path;
 
@@ -196,4 +198,12 @@ fn build_background(context: &mut Context, block: &Block) -> Result<Color, Scene
         }
     }
     Ok(color)
+}
+
+/// Parses and builds scene text (a file `t.txt` in the working directory), for tests.
+#[cfg(test)]
+pub(crate) fn build_text(text: &str) -> Result<Scene, String> {
+    let file = Path::new("t.txt");
+    let document = crate::scene::parse::parse(text, file).map_err(|e| e.to_string())?;
+    build(&document, file, &LoadOptions::default()).map_err(|e| e.to_string())
 }
