@@ -51,6 +51,7 @@ fn scene_with(root: Object) -> Scene {
         dialect: Dialect::Canonical,
         warnings: Vec::new(),
         unsupported: Vec::new(),
+        load: Default::default(),
     }
 }
 

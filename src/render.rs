@@ -74,7 +74,7 @@ pub fn render_into(
     let height = film.height;
     let camera = Camera::new(&scene.camera, width as u32, height as u32);
     let view = SceneView::new(scene, world);
-    let uses_time = has_motion(&scene.root);
+    let uses_time = SamplingPlan::for_scene(scene).time;
     let before = (film.samples(), film.dropped());
     let rows_done = AtomicUsize::new(0);
     let start = Instant::now();
@@ -138,6 +138,24 @@ pub fn tent(u: f64) -> f64 {
         r.sqrt() - 1.0
     } else {
         1.0 - (2.0 - r).sqrt()
+    }
+}
+
+/// Which sample dimensions a scene needs: a scene pays only for what it uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SamplingPlan {
+    /// Lens samples (depth of field).
+    pub lens: bool,
+    /// Shutter-time samples (moving spheres).
+    pub time: bool,
+}
+
+impl SamplingPlan {
+    pub fn for_scene(scene: &Scene) -> SamplingPlan {
+        SamplingPlan {
+            lens: scene.camera.lens_radius >= crate::camera::MIN_LENS_RADIUS,
+            time: has_motion(&scene.root),
+        }
     }
 }
 

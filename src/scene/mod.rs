@@ -33,9 +33,13 @@ pub fn load_scene(path: &Path, options: &LoadOptions) -> Result<Scene, SceneErro
         file: path.to_path_buf(),
         error,
     })?;
+    let started = std::time::Instant::now();
     let text = String::from_utf8_lossy(&bytes);
     let document = parse(&text, path)?;
-    build(&document, path, options)
+    let parse_seconds = started.elapsed().as_secs_f64();
+    let mut scene = build(&document, path, options)?;
+    scene.load.parse_seconds = parse_seconds;
+    Ok(scene)
 }
 
 #[cfg(test)]

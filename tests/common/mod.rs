@@ -93,6 +93,7 @@ pub fn scene_with(materials: Vec<Material>, root: Object) -> Scene {
         dialect: Dialect::Canonical,
         warnings: Vec::new(),
         unsupported: Vec::new(),
+        load: Default::default(),
     }
 }
 

@@ -164,7 +164,15 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         1 => roots.pop().unwrap_or(Object::Group(Vec::new())),
         _ => Object::Group(roots),
     };
+    let texture_start = std::time::Instant::now();
     let (materials, textures) = textures::load_textures(&mut context, specs, &root)?;
+    let load = crate::scene::model::LoadStats {
+        mesh_seconds: objects.mesh_seconds,
+        meshes_loaded: objects.meshes_loaded(),
+        texture_seconds: texture_start.elapsed().as_secs_f64(),
+        textures_loaded: textures.len(),
+        ..Default::default()
+    };
     Ok(Scene {
         camera,
         background,
@@ -175,6 +183,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         dialect,
         warnings: context.warnings,
         unsupported: context.unsupported,
+        load,
     })
 }
 

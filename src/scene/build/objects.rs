@@ -19,14 +19,22 @@ pub struct ObjectBuilder {
     material_count: usize,
     current: usize,
     meshes: HashMap<PathBuf, Arc<MeshData>>,
+    /// Time spent reading OBJ files.
+    pub mesh_seconds: f64,
 }
 
 impl ObjectBuilder {
+    /// Distinct OBJ files read so far.
+    pub fn meshes_loaded(&self) -> usize {
+        self.meshes.len()
+    }
+
     pub fn new(material_count: usize) -> Self {
         ObjectBuilder {
             material_count,
             current: 0,
             meshes: HashMap::new(),
+            mesh_seconds: 0.0,
         }
     }
 
@@ -161,7 +169,9 @@ impl ObjectBuilder {
         let mesh = match self.meshes.get(&path) {
             Some(mesh) => mesh.clone(),
             None => {
+                let started = std::time::Instant::now();
                 let (mesh, warnings) = obj::load_obj(&path).map_err(|e| context.error(at, e))?;
+                self.mesh_seconds += started.elapsed().as_secs_f64();
                 for warning in warnings {
                     context.warn(at, warning)?;
                 }
