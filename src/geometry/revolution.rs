@@ -147,7 +147,7 @@ impl Revolution {
             if segment.y_max < y_lo || segment.y_min > y_hi || segment.r_max < r_min {
                 continue;
             }
-            segment_seeds(segment, &ray_2d, (t0, t1), self.scale, &mut push);
+            segment_seeds(segment, &ray_2d, (t0 - slack, t1 + slack), &mut push);
         }
 
         let mut best: Option<Intersection> = None;
@@ -259,100 +259,77 @@ impl RadialRay {
     }
 }
 
-/// Seeds (t, u) from the ray against one frustum: exact crossings, or the point of
-/// closest approach when the ray passes within the segment's chord deviation.
+/// Seeds (t, u) from the ray against one frustum: its exact crossings and its
+/// point of closest approach, kept when the ray point lies within the segment's
+/// chord deviation of the segment in the (r, y) half-plane. Steep segments are
+/// solved for t (the segment parameter s is linear in y), flat ones for s (t is
+/// linear in s), so neither divides by a tiny number.
 fn segment_seeds(
     segment: &Segment,
     ray: &RadialRay,
     (t0, t1): (f64, f64),
-    scale: f64,
     push: &mut impl FnMut(f64, f64),
 ) {
     let (x0, y0) = (segment.start.x, segment.start.y);
     let (dx, dy) = (segment.end.x - x0, segment.end.y - y0);
-    let to_u = |s: f64| segment.u0 + s.clamp(0.0, 1.0) * (segment.u1 - segment.u0);
-    if dy.abs() <= 1e-12 * scale {
-        // An annulus in the plane y = y0.
-        if ray.d.y == 0.0 {
-            return;
+    let mut candidates = [f64::NAN; 3];
+    if dy.abs() >= dx.abs() {
+        // s = alpha + beta t and x = p + q t: solve r(t)^2 = x(t)^2 for t.
+        let (alpha, beta) = ((ray.o.y - y0) / dy, ray.d.y / dy);
+        let (p, q) = (x0 + dx * alpha, dx * beta);
+        candidates = quadratic_candidates(ray.a - q * q, ray.b - p * q, ray.c - p * p);
+        // Keep the extremum within the segment's t range.
+        if beta != 0.0 {
+            let (ta, tb) = (-alpha / beta, (1.0 - alpha) / beta);
+            candidates[0] = candidates[0].clamp(ta.min(tb), ta.max(tb));
         }
-        let t = (y0 - ray.o.y) / ray.d.y;
-        let r = ray.radius(t);
-        let (lo, hi) = (x0.abs().min((x0 + dx).abs()), x0.abs().max((x0 + dx).abs()));
-        if r >= lo - segment.deviation && r <= hi + segment.deviation {
-            let s = if hi > lo { (r - lo) / (hi - lo) } else { 0.5 };
-            let s = if x0.abs() <= (x0 + dx).abs() {
-                s
-            } else {
-                1.0 - s
-            };
-            push(t, to_u(s));
-        }
-        return;
+    } else if ray.d.y != 0.0 {
+        // t = alpha + beta s: solve r(t(s))^2 = x(s)^2 for s.
+        let (alpha, beta) = ((y0 - ray.o.y) / ray.d.y, dy / ray.d.y);
+        let (a, b, c) = (ray.a, ray.b, ray.c);
+        let roots = quadratic_candidates(
+            a * beta * beta - dx * dx,
+            a * alpha * beta + b * beta - x0 * dx,
+            a * alpha * alpha + 2.0 * b * alpha + c - x0 * x0,
+        );
+        candidates = roots.map(|s| alpha + beta * s);
+        candidates[0] = alpha + beta * roots[0].clamp(0.0, 1.0);
     }
-    // Along the ray: s(t) = alpha + beta t, x(t) = x0 + dx s(t) = p + q t.
-    let beta = ray.d.y / dy;
-    let alpha = (ray.o.y - y0) / dy;
-    let p = x0 + dx * alpha;
-    let q = dx * beta;
-    // r(t)^2 - x(t)^2 = qa t^2 + 2 qb t + qc.
-    let qa = ray.a - q * q;
-    let qb = ray.b - p * q;
-    let qc = ray.c - p * p;
-    let mut found = false;
-    let accept = |t: f64, push: &mut dyn FnMut(f64, f64)| {
-        let s = alpha + beta * t;
-        if (-1e-6..=1.0 + 1e-6).contains(&s) {
-            push(t, to_u(s));
-            true
-        } else {
-            false
+    let start = Point2::new(x0.abs(), y0);
+    let end = Point2::new(segment.end.x.abs(), segment.end.y);
+    for t in candidates {
+        if !(t.is_finite() && t >= t0 && t <= t1) {
+            continue;
         }
-    };
-    if qa.abs() <= 1e-12 * (ray.a + q * q) {
-        if qb != 0.0 {
-            found |= accept(-qc / (2.0 * qb), push);
+        let point = Point2::new(ray.radius(t), ray.o.y + t * ray.d.y);
+        let (distance, s) = project_to_segment(&point, &start, &end);
+        if distance <= segment.deviation {
+            push(t, segment.u0 + s * (segment.u1 - segment.u0));
         }
-    } else {
-        let discriminant = qb * qb - qa * qc;
-        if discriminant >= 0.0 {
-            let root = -(qb + discriminant.sqrt().copysign(qb));
-            if root != 0.0 {
-                found |= accept(root / qa, push);
-                found |= accept(qc / root, push);
-            } else {
-                found |= accept(0.0, push);
-            }
-        }
-    }
-    if found {
-        return;
-    }
-    // Near miss: the extremum of r^2 - x^2 within the frustum's t range.
-    let (ts0, ts1) = if beta != 0.0 {
-        let (a, b) = ((0.0 - alpha) / beta, (1.0 - alpha) / beta);
-        (a.min(b).max(t0), a.max(b).min(t1))
-    } else if (0.0..=1.0).contains(&alpha) {
-        (t0, t1)
-    } else {
-        return;
-    };
-    if ts0 > ts1 {
-        return;
-    }
-    let t = if qa != 0.0 { -qb / qa } else { ts0 };
-    let t = if t.is_finite() {
-        t.clamp(ts0, ts1)
-    } else {
-        ts0
-    };
-    let x = (p + q * t).abs();
-    if (ray.radius(t) - x).abs() <= segment.deviation {
-        push(t, to_u(alpha + beta * t));
     }
 }
 
-fn distance_to_segment(p: &Point2, a: &Point2, b: &Point2) -> f64 {
+/// The extremum and the real roots of `qa x^2 + 2 qb x + qc` (NaN when absent).
+fn quadratic_candidates(qa: f64, qb: f64, qc: f64) -> [f64; 3] {
+    let mut out = [f64::NAN; 3];
+    if qa == 0.0 {
+        out[1] = -qc / (2.0 * qb);
+        return out;
+    }
+    out[0] = -qb / qa;
+    let discriminant = qb * qb - qa * qc;
+    if discriminant >= 0.0 {
+        let root = -(qb + discriminant.sqrt().copysign(qb));
+        out[1] = root / qa;
+        if root != 0.0 {
+            out[2] = qc / root;
+        }
+    }
+    out
+}
+
+/// Distance from `p` to the segment a-b and the parameter of the closest point.
+fn project_to_segment(p: &Point2, a: &Point2, b: &Point2) -> (f64, f64) {
     let ab = b - a;
     let length_squared = ab.norm_squared();
     let s = if length_squared > 0.0 {
@@ -360,5 +337,9 @@ fn distance_to_segment(p: &Point2, a: &Point2, b: &Point2) -> f64 {
     } else {
         0.0
     };
-    (p - (a + ab * s)).norm()
+    ((p - (a + ab * s)).norm(), s)
+}
+
+fn distance_to_segment(p: &Point2, a: &Point2, b: &Point2) -> f64 {
+    project_to_segment(p, a, b).0
 }
