@@ -289,6 +289,100 @@ impl Builder {
 mod tests {
     use super::*;
 
+    use crate::color::Color;
+    use crate::math::Matrix;
+    use crate::scene::model::{CameraDesc, Dialect, MeshData};
+
+    fn scene(root: Object) -> Scene {
+        Scene {
+            camera: CameraDesc {
+                center: Point3::zeros(),
+                direction: -Vec3::z(),
+                up: Vec3::y(),
+                width: 4,
+                height: 4,
+                fov: None,
+                canvas_distance: 0.0,
+                focus_distance: 1.0,
+                lens_radius: 0.0,
+            },
+            background: Color::BLACK,
+            materials: Vec::new(),
+            textures: Vec::new(),
+            lights: Vec::new(),
+            root,
+            dialect: Dialect::Canonical,
+            warnings: Vec::new(),
+            unsupported: Vec::new(),
+        }
+    }
+
+    fn translate(offset: Vec3, child: Object) -> Object {
+        let matrix = Matrix::new_translation(&offset);
+        Object::Transform {
+            matrix,
+            inverse: Matrix::new_translation(&-offset),
+            child: Box::new(child),
+        }
+    }
+
+    #[test]
+    fn build_composes_transforms_and_shares_meshes() {
+        let data = Arc::new(MeshData {
+            positions: vec![Point3::zeros(), Point3::x(), Point3::y()],
+            normals: None,
+            uvs: None,
+            triangles: vec![[0, 1, 2]],
+        });
+        let mesh = |material| Object::Mesh {
+            mesh: Arc::clone(&data),
+            smooth: false,
+            material,
+        };
+        let root = Object::Group(vec![
+            translate(
+                Vec3::new(0.0, 0.0, -5.0),
+                translate(Vec3::new(10.0, 0.0, 0.0), mesh(1)),
+            ),
+            translate(Vec3::zeros(), mesh(2)),
+            Object::Sphere {
+                center: Point3::zeros(),
+                radius: 0.0,
+                motion: Vec3::zeros(),
+                material: 3,
+            },
+            Object::Plane {
+                normal: Vec3::y(),
+                offset: -1.0,
+                material: 4,
+            },
+        ]);
+        let world = World::build(&scene(root));
+        // The zero-radius sphere is dropped; the identity transform is not stored.
+        assert_eq!(world.primitives().len(), 3);
+        assert!(world.primitive(1).transform.is_none());
+        let (Shape::Mesh { mesh: a, .. }, Shape::Mesh { mesh: b, .. }) =
+            (&world.primitive(0).shape, &world.primitive(1).shape)
+        else {
+            panic!("meshes expected");
+        };
+        assert!(Arc::ptr_eq(a, b), "one geometry mesh per MeshData");
+        // Nested translations compose: the first instance sits at (10, 0, -5).
+        let ray = Ray::new(Point3::new(10.25, 0.25, 0.0), -Vec3::z(), 0.0);
+        let hit = world.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+        assert_eq!(hit.material, 1);
+        assert!((hit.t - 5.0).abs() < 1e-12);
+        assert!((hit.point - Point3::new(10.25, 0.25, -5.0)).norm() < 1e-12);
+        let down = Ray::new(Point3::new(3.0, 0.0, 3.0), -Vec3::y(), 0.0);
+        assert_eq!(
+            world.intersect(&down, 0.0, f64::INFINITY).unwrap().material,
+            4
+        );
+        assert!(world.occluded(&down, 0.0, 2.0));
+        assert!(!world.occluded(&down, 0.0, 0.5));
+        assert!((world.bounds().max.x - 11.0).abs() < 1e-12);
+    }
+
     #[test]
     fn world_is_send_and_sync() {
         fn check<T: Send + Sync>() {}

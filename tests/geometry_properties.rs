@@ -300,10 +300,10 @@ fn spawned_rays_do_not_rehit_their_surface() {
                 let origin = offset_origin(&hit.point, &hit.geometric_normal, &direction);
                 let spawned = Ray::new(origin, direction, ray.time);
                 trials += 1;
-                if let Some(again) = world.intersect(&spawned, 0.0, f64::INFINITY) {
-                    if again.t < 1e-7 * size {
-                        failures += 1;
-                    }
+                if let Some(again) = world.intersect(&spawned, 0.0, f64::INFINITY)
+                    && again.t < 1e-7 * size
+                {
+                    failures += 1;
                 }
             }
         }

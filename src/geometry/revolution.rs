@@ -153,10 +153,11 @@ impl Revolution {
         let mut best: Option<Intersection> = None;
         for &(t, u) in &seeds[..count] {
             let limit = best.map_or(t_max, |h| h.t);
-            if let Some((t, u)) = self.refine(&ray_2d, t, u) {
-                if t > t_min && t < limit {
-                    best = Some(Intersection::new(t, u, 0.0));
-                }
+            if let Some((t, u)) = self.refine(&ray_2d, t, u)
+                && t > t_min
+                && t < limit
+            {
+                best = Some(Intersection::new(t, u, 0.0));
             }
         }
         best
@@ -342,4 +343,83 @@ fn project_to_segment(p: &Point2, a: &Point2, b: &Point2) -> (f64, f64) {
 
 fn distance_to_segment(p: &Point2, a: &Point2, b: &Point2) -> f64 {
     project_to_segment(p, a, b).0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rng::Rng;
+    use crate::scene::model::CurveKind;
+
+    fn vase() -> Revolution {
+        Revolution::new(&Profile {
+            kind: CurveKind::Bezier,
+            controls: vec![
+                [0.0, 0.0],
+                [2.2, 0.0],
+                [3.0, 1.5],
+                [1.2, 3.0],
+                [0.8, 4.0],
+                [1.6, 5.0],
+                [2.0, 5.6],
+            ],
+        })
+        .unwrap()
+    }
+
+    fn sweep(curve: &Curve, u: f64, theta: f64) -> Point3 {
+        let p = curve.evaluate(u).0;
+        Point3::new(p.x * theta.cos(), p.y, -p.x * theta.sin())
+    }
+
+    #[test]
+    fn hits_lie_on_the_surface_with_the_swept_normal() {
+        let surface = vase();
+        let mut rng = Rng::new(8, 8);
+        let mut hits = 0;
+        for _ in 0..2000 {
+            let origin = Point3::new(
+                rng.next_f64() * 20.0 - 10.0,
+                rng.next_f64() * 20.0 - 7.0,
+                rng.next_f64() * 20.0 - 10.0,
+            );
+            let target = Point3::new(
+                rng.next_f64() * 6.0 - 3.0,
+                rng.next_f64() * 5.6,
+                rng.next_f64() * 6.0 - 3.0,
+            );
+            let ray = Ray::new(origin, target - origin, 0.0);
+            let Some(hit) = surface.intersect(&ray, 0.0, f64::INFINITY) else {
+                continue;
+            };
+            hits += 1;
+            let s = surface.surface(&ray, &hit);
+            assert!((s.point - ray.at(hit.t)).norm() < 1e-7, "{:?}", s.point);
+            let (u, theta) = (s.uv[1], s.uv[0] * 2.0 * PI);
+            assert!((sweep(surface.curve(), u, theta) - s.point).norm() < 1e-9);
+            // Normal = dS/du x dS/dtheta from finite differences.
+            let h = 1e-6;
+            let du = sweep(surface.curve(), u + h, theta) - sweep(surface.curve(), u - h, theta);
+            let dtheta =
+                sweep(surface.curve(), u, theta + h) - sweep(surface.curve(), u, theta - h);
+            let expected = du.cross(&dtheta);
+            if expected.norm() > 1e-9 {
+                let error = (expected.normalize() - s.geometric_normal).norm();
+                assert!(error < 1e-5, "normal off by {error} at u={u}");
+                assert!((du.normalize() - s.tangent).norm() < 1e-5);
+            }
+        }
+        assert!(hits > 500, "{hits}");
+    }
+
+    #[test]
+    fn ray_along_the_axis_hits_the_bottom_centre() {
+        let surface = vase();
+        let ray = Ray::new(Point3::new(0.0, -5.0, 0.0), Vec3::y(), 0.0);
+        let hit = surface.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+        assert!((hit.t - 5.0).abs() < 1e-6, "{}", hit.t);
+        let s = surface.surface(&ray, &hit);
+        assert!(s.geometric_normal.iter().all(|c| c.is_finite()));
+        assert!(s.geometric_normal.y.abs() > 0.99);
+    }
 }
