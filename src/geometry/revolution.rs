@@ -4,38 +4,23 @@
 //! The 3D problem is reduced to the (r, y) half-plane: the ray gives
 //! `r(t)^2 = (ox + t dx)^2 + (oz + t dz)^2` and `y(t) = oy + t dy`, and a hit solves
 //! `g(t, u) = (x(u)^2 - r(t)^2, y(u) - y(t)) = 0`. Deterministic seeds come from the
-//! ray against a cone-frustum tessellation of the profile (computed once), plus
-//! near misses of those frusta within their chord deviation (silhouettes). Newton
+//! ray against a cone-frustum tessellation of the profile (see `profile_seeds`). Newton
 //! then converges on the true curve; only roots with a small residual, `u` in
 //! [0, 1] and `t` in range are accepted, and the nearest wins. `theta` follows from
 //! the hit point.
 
 use std::f64::consts::PI;
 
-use super::curve::{Curve, Point2};
+use super::curve::Curve;
+use super::profile_seeds::{RadialRay, SeedTessellation};
 use super::{Intersection, SurfaceHit, fallback_tangent, normalize_or};
 use crate::math::{Aabb, Point3, Ray, Vec3, inverse_direction};
 use crate::scene::model::Profile;
 use crate::world::UvMapping;
 
-/// Frusta of the seeding tessellation.
-pub const SEED_SEGMENTS: usize = 128;
 /// At most this many seeds per ray are refined (further ones are dropped).
 const MAX_SEEDS: usize = 48;
 const MAX_ITERATIONS: usize = 32;
-
-#[derive(Clone, Copy, Debug)]
-struct Segment {
-    u0: f64,
-    u1: f64,
-    start: Point2,
-    end: Point2,
-    /// Bound on the distance between the curve piece and its chord.
-    deviation: f64,
-    y_min: f64,
-    y_max: f64,
-    r_max: f64,
-}
 
 #[derive(Clone, Debug)]
 pub struct Revolution {
@@ -43,7 +28,7 @@ pub struct Revolution {
     bounds: Aabb,
     /// Size of the object, the unit of the tolerances.
     scale: f64,
-    segments: Vec<Segment>,
+    seeds: SeedTessellation,
 }
 
 impl Revolution {
@@ -64,41 +49,12 @@ impl Revolution {
             min: Point3::new(-radius, y_min, -radius),
             max: Point3::new(radius, y_max, radius),
         };
-        let segments = (0..SEED_SEGMENTS)
-            .map(|i| {
-                let u0 = i as f64 / SEED_SEGMENTS as f64;
-                let u1 = (i + 1) as f64 / SEED_SEGMENTS as f64;
-                let start = curve.evaluate(u0).0;
-                let end = curve.evaluate(u1).0;
-                let mut deviation: f64 = 0.0;
-                let mut y_lo = start.y.min(end.y);
-                let mut y_hi = start.y.max(end.y);
-                let mut r_hi = start.x.abs().max(end.x.abs());
-                for k in 1..8 {
-                    let p = curve.evaluate(u0 + (u1 - u0) * k as f64 / 8.0).0;
-                    deviation = deviation.max(distance_to_segment(&p, &start, &end));
-                    y_lo = y_lo.min(p.y);
-                    y_hi = y_hi.max(p.y);
-                    r_hi = r_hi.max(p.x.abs());
-                }
-                let deviation = 2.0 * deviation + 1e-9 * scale;
-                Segment {
-                    u0,
-                    u1,
-                    start,
-                    end,
-                    deviation,
-                    y_min: y_lo - deviation,
-                    y_max: y_hi + deviation,
-                    r_max: r_hi + deviation,
-                }
-            })
-            .collect();
+        let seeds = SeedTessellation::new(&curve, scale);
         Some(Revolution {
             curve,
             bounds,
             scale,
-            segments,
+            seeds,
         })
     }
 
@@ -122,18 +78,8 @@ impl Revolution {
         if !(t0.is_finite() && t1.is_finite()) {
             return None;
         }
-        let (y_a, y_b) = (o.y + t0 * d.y, o.y + t1 * d.y);
-        let (y_lo, y_hi) = (y_a.min(y_b), y_a.max(y_b));
-        // r(t)^2 = a t^2 + 2 b t + c.
-        let a = d.x * d.x + d.z * d.z;
-        let b = o.x * d.x + o.z * d.z;
-        let c = o.x * o.x + o.z * o.z;
-        let t_closest = if a > 0.0 { (-b / a).clamp(t0, t1) } else { t0 };
-        let r_min = (a * t_closest * t_closest + 2.0 * b * t_closest + c)
-            .max(0.0)
-            .sqrt();
         let slack = 1e-6 * (t1 - t0).abs() + 1e-12;
-        let ray_2d = RadialRay { o, d, a, b, c };
+        let ray_2d = RadialRay::new(ray);
 
         let mut seeds = [(0.0f64, 0.0f64); MAX_SEEDS];
         let mut count = 0usize;
@@ -143,12 +89,8 @@ impl Revolution {
                 count += 1;
             }
         };
-        for segment in &self.segments {
-            if segment.y_max < y_lo || segment.y_min > y_hi || segment.r_max < r_min {
-                continue;
-            }
-            segment_seeds(segment, &ray_2d, (t0 - slack, t1 + slack), &mut push);
-        }
+        self.seeds
+            .seeds(&ray_2d, (t0 - slack, t1 + slack), &mut push);
 
         let mut best: Option<Intersection> = None;
         for &(t, u) in &seeds[..count] {
@@ -243,106 +185,6 @@ impl Revolution {
             uv_mapping: UvMapping::Unit,
         }
     }
-}
-
-/// The ray with its radial quadratic `r(t)^2 = a t^2 + 2 b t + c`.
-struct RadialRay {
-    o: Point3,
-    d: Vec3,
-    a: f64,
-    b: f64,
-    c: f64,
-}
-
-impl RadialRay {
-    fn radius(&self, t: f64) -> f64 {
-        (self.a * t * t + 2.0 * self.b * t + self.c).max(0.0).sqrt()
-    }
-}
-
-/// Seeds (t, u) from the ray against one frustum: its exact crossings and its
-/// point of closest approach, kept when the ray point lies within the segment's
-/// chord deviation of the segment in the (r, y) half-plane. Steep segments are
-/// solved for t (the segment parameter s is linear in y), flat ones for s (t is
-/// linear in s), so neither divides by a tiny number.
-fn segment_seeds(
-    segment: &Segment,
-    ray: &RadialRay,
-    (t0, t1): (f64, f64),
-    push: &mut impl FnMut(f64, f64),
-) {
-    let (x0, y0) = (segment.start.x, segment.start.y);
-    let (dx, dy) = (segment.end.x - x0, segment.end.y - y0);
-    let mut candidates = [f64::NAN; 3];
-    if dy.abs() >= dx.abs() {
-        // s = alpha + beta t and x = p + q t: solve r(t)^2 = x(t)^2 for t.
-        let (alpha, beta) = ((ray.o.y - y0) / dy, ray.d.y / dy);
-        let (p, q) = (x0 + dx * alpha, dx * beta);
-        candidates = quadratic_candidates(ray.a - q * q, ray.b - p * q, ray.c - p * p);
-        // Keep the extremum within the segment's t range.
-        if beta != 0.0 {
-            let (ta, tb) = (-alpha / beta, (1.0 - alpha) / beta);
-            candidates[0] = candidates[0].clamp(ta.min(tb), ta.max(tb));
-        }
-    } else if ray.d.y != 0.0 {
-        // t = alpha + beta s: solve r(t(s))^2 = x(s)^2 for s.
-        let (alpha, beta) = ((y0 - ray.o.y) / ray.d.y, dy / ray.d.y);
-        let (a, b, c) = (ray.a, ray.b, ray.c);
-        let roots = quadratic_candidates(
-            a * beta * beta - dx * dx,
-            a * alpha * beta + b * beta - x0 * dx,
-            a * alpha * alpha + 2.0 * b * alpha + c - x0 * x0,
-        );
-        candidates = roots.map(|s| alpha + beta * s);
-        candidates[0] = alpha + beta * roots[0].clamp(0.0, 1.0);
-    }
-    let start = Point2::new(x0.abs(), y0);
-    let end = Point2::new(segment.end.x.abs(), segment.end.y);
-    for t in candidates {
-        if !(t.is_finite() && t >= t0 && t <= t1) {
-            continue;
-        }
-        let point = Point2::new(ray.radius(t), ray.o.y + t * ray.d.y);
-        let (distance, s) = project_to_segment(&point, &start, &end);
-        if distance <= segment.deviation {
-            push(t, segment.u0 + s * (segment.u1 - segment.u0));
-        }
-    }
-}
-
-/// The extremum and the real roots of `qa x^2 + 2 qb x + qc` (NaN when absent).
-fn quadratic_candidates(qa: f64, qb: f64, qc: f64) -> [f64; 3] {
-    let mut out = [f64::NAN; 3];
-    if qa == 0.0 {
-        out[1] = -qc / (2.0 * qb);
-        return out;
-    }
-    out[0] = -qb / qa;
-    let discriminant = qb * qb - qa * qc;
-    if discriminant >= 0.0 {
-        let root = -(qb + discriminant.sqrt().copysign(qb));
-        out[1] = root / qa;
-        if root != 0.0 {
-            out[2] = qc / root;
-        }
-    }
-    out
-}
-
-/// Distance from `p` to the segment a-b and the parameter of the closest point.
-fn project_to_segment(p: &Point2, a: &Point2, b: &Point2) -> (f64, f64) {
-    let ab = b - a;
-    let length_squared = ab.norm_squared();
-    let s = if length_squared > 0.0 {
-        ((p - a).dot(&ab) / length_squared).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    ((p - (a + ab * s)).norm(), s)
-}
-
-fn distance_to_segment(p: &Point2, a: &Point2, b: &Point2) -> f64 {
-    project_to_segment(p, a, b).0
 }
 
 #[cfg(test)]
