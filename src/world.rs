@@ -9,7 +9,7 @@ use crate::geometry::{
     Disk, Intersection, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, SurfaceHit, Transform,
     Triangle,
 };
-use crate::math::{Aabb, Point3, Ray, Vec3};
+use crate::math::{Aabb, Point3, Ray, Vec3, offset_origin};
 use crate::scene::model::{Object, Scene};
 
 /// How a hit's `uv` is meant to be read by a texture lookup.
@@ -40,6 +40,20 @@ pub struct WorldHit {
     pub primitive: usize,
     /// Element within the primitive (triangle of a mesh), else 0.
     pub element: u32,
+}
+
+impl WorldHit {
+    /// Origin for a ray leaving the hit in `direction` (either side of the surface):
+    /// the point offset along the geometric normal by [`offset_origin`]. Rays
+    /// spawned from it do not re-hit this surface, even with `t_min = 0`.
+    pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
+        offset_origin(&self.point, &self.geometric_normal, direction)
+    }
+
+    /// A ray leaving the hit in `direction` at shutter time `time`.
+    pub fn spawn_ray(&self, direction: Vec3, time: f64) -> Ray {
+        Ray::new(self.spawn_origin(&direction), direction, time)
+    }
 }
 
 /// One shape with its material and optional object-to-world transform.

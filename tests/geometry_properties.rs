@@ -178,8 +178,11 @@ fn spawned_rays_do_not_rehit_their_surface() {
                 if direction.dot(&hit.geometric_normal) * side < 0.0 {
                     direction = -direction;
                 }
-                let origin = offset_origin(&hit.point, &hit.geometric_normal, &direction);
-                let spawned = Ray::new(origin, direction, ray.time);
+                let spawned = hit.spawn_ray(direction, ray.time);
+                assert_eq!(
+                    spawned.origin,
+                    offset_origin(&hit.point, &hit.geometric_normal, &direction)
+                );
                 trials += 1;
                 if let Some(again) = world.intersect(&spawned, 0.0, f64::INFINITY)
                     && again.t < 1e-7 * size

@@ -21,6 +21,8 @@ use crate::world::UvMapping;
 /// At most this many seeds per ray are refined (further ones are dropped).
 const MAX_SEEDS: usize = 48;
 const MAX_ITERATIONS: usize = 32;
+/// Seeds farther than this (times the object size) beyond the best root are skipped.
+const SEED_MARGIN: f64 = 0.05;
 
 #[derive(Clone, Debug)]
 pub struct Revolution {
@@ -92,9 +94,17 @@ impl Revolution {
         self.seeds
             .seeds(&ray_2d, (t0 - slack, t1 + slack), &mut push);
 
+        // Nearest seeds first; Newton lands close to its seed, so once a root is
+        // found, seeds well beyond it cannot give a nearer one.
+        let seeds = &mut seeds[..count];
+        seeds.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        let margin = SEED_MARGIN * self.scale / ray.direction.norm();
         let mut best: Option<Intersection> = None;
-        for &(t, u) in &seeds[..count] {
+        for &(t, u) in seeds.iter() {
             let limit = best.map_or(t_max, |h| h.t);
+            if t > limit + margin {
+                break;
+            }
             if let Some((t, u)) = self.refine(&ray_2d, t, u)
                 && t > t_min
                 && t < limit
