@@ -8,7 +8,7 @@ use std::sync::Arc;
 
 use common::*;
 use pathtracer::geometry::triangle::intersect_vertices;
-use pathtracer::geometry::{Mesh, Plane, Revolution, Shape, Sphere};
+use pathtracer::geometry::{Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere};
 use pathtracer::math::{Aabb, Matrix, Point3, Ray, Vec3, offset_origin};
 use pathtracer::rng::Rng;
 use pathtracer::world::{Primitive, World};
@@ -117,8 +117,20 @@ fn spawn_test_primitives() -> Vec<(String, Primitive)> {
                 * Matrix::from_euler_angles(0.3, 0.5, 0.1),
         ),
     ];
+    let rectangle = Shape::Rectangle(
+        Rectangle::new(
+            Point3::new(-1.0, 0.2, -1.0),
+            Vec3::new(2.0, 0.1, 0.0),
+            Vec3::new(0.3, 0.0, 2.0),
+        )
+        .unwrap(),
+    );
+    let disk =
+        Shape::Disk(Disk::new(Point3::new(0.1, 0.2, 0.3), Vec3::new(1.0, 2.0, 3.0), 1.5).unwrap());
     let mut shapes = vec![
         ("sphere", sphere),
+        ("rectangle", rectangle),
+        ("disk", disk),
         ("plane", plane),
         ("vase", revolution),
         ("glass", glass),
@@ -254,7 +266,7 @@ fn assert_finite_hit(world: &World, ray: &Ray, what: &str) {
 
 #[test]
 fn axis_parallel_and_grazing_rays_give_no_nan() {
-    use pathtracer::geometry::{Disk, Rectangle, Triangle};
+    use pathtracer::geometry::Triangle;
     let shapes = vec![
         Shape::Sphere(Sphere::new(Point3::zeros(), 1.0, Vec3::zeros())),
         Shape::Plane(Plane::new(Vec3::y(), 0.0).unwrap()),
