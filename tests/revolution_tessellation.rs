@@ -103,3 +103,40 @@ fn newton_revolution_agrees_with_fine_tessellation() {
         assert!(rate < 1e-3, "{name}: disagreement rate {rate}");
     }
 }
+
+/// A profile that crosses the axis (x changes sign): the surface is the union of
+/// the sweeps of both halves, and seeds must still be found near the crossing.
+#[test]
+fn profile_crossing_the_axis_agrees_with_tessellation() {
+    let profile = pathtracer::scene::model::Profile {
+        kind: pathtracer::scene::model::CurveKind::Bezier,
+        controls: vec![[-1.0, 0.0], [0.5, 1.0], [1.5, 2.0], [-0.5, 3.0]],
+    };
+    let surface = Revolution::new(&profile).unwrap();
+    let curve = Curve::new(&profile).unwrap();
+    let points: Vec<Point2> = (0..=2000)
+        .map(|i| curve.evaluate(i as f64 / 2000.0).0)
+        .collect();
+    let bounds = surface.bounds();
+    let scale = bounds.extent().norm();
+    let mut rng = Rng::new(4, 4);
+    let mut disagreements = 0;
+    let rays = 5000;
+    for _ in 0..rays {
+        let mut ray = ray_at_box(&mut rng, &bounds);
+        ray.direction = ray.direction.normalize();
+        let reference = points
+            .windows(2)
+            .filter_map(|w| frustum_hit(w[0], w[1], &ray))
+            .fold(None, |m: Option<f64>, t| Some(m.map_or(t, |m| m.min(t))));
+        let newton = surface.intersect(&ray, 0.0, f64::INFINITY).map(|h| h.t);
+        let agree = match (reference, newton) {
+            (Some(a), Some(b)) => (a - b).abs() <= 1e-3 * scale,
+            (None, None) => true,
+            _ => false,
+        };
+        disagreements += !agree as usize;
+    }
+    println!("axis-crossing profile: {disagreements} disagreements in {rays} rays");
+    assert!(disagreements * 1000 < rays, "{disagreements}");
+}

@@ -144,14 +144,12 @@ fn segment_seeds(
         candidates = roots.map(|s| alpha + beta * s);
         candidates[0] = alpha + beta * roots[0].clamp(0.0, 1.0);
     }
-    let start = Point2::new(x0.abs(), y0);
-    let end = Point2::new(segment.end.x.abs(), segment.end.y);
     for t in candidates {
         if !(t.is_finite() && t >= t0 && t <= t1) {
             continue;
         }
         let point = Point2::new(ray.radius(t), ray.o.y + t * ray.d.y);
-        let (distance, s) = project_to_segment(&point, &start, &end);
+        let (distance, s) = project_to_folded_segment(&point, &segment.start, &segment.end);
         if distance <= segment.deviation {
             push(t, segment.u0 + s * (segment.u1 - segment.u0));
         }
@@ -175,6 +173,25 @@ fn quadratic_candidates(qa: f64, qb: f64, qc: f64) -> [f64; 3] {
         }
     }
     out
+}
+
+/// Distance from `p` (in the (r, y) half-plane) to the segment a-b of the (x, y)
+/// plane folded onto it by r = |x|, and the parameter of the closest point. A
+/// segment crossing the axis folds into two pieces.
+fn project_to_folded_segment(p: &Point2, a: &Point2, b: &Point2) -> (f64, f64) {
+    let fold = |q: &Point2| Point2::new(q.x.abs(), q.y);
+    if a.x * b.x >= 0.0 {
+        return project_to_segment(p, &fold(a), &fold(b));
+    }
+    let split = a.x / (a.x - b.x);
+    let axis = Point2::new(0.0, a.y + split * (b.y - a.y));
+    let (d0, s0) = project_to_segment(p, &fold(a), &axis);
+    let (d1, s1) = project_to_segment(p, &axis, &fold(b));
+    if d0 <= d1 {
+        (d0, s0 * split)
+    } else {
+        (d1, split + s1 * (1.0 - split))
+    }
 }
 
 /// Distance from `p` to the segment a-b and the parameter of the closest point.
