@@ -72,7 +72,13 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
 fn print_phases(scene: &Scene, world: &World, world_seconds: f64, render_seconds: f64) {
     let load = &scene.load;
     let plan = SamplingPlan::for_scene(scene);
-    let skipped = |done: bool| if done { "" } else { " (skipped: none in the scene)" };
+    let skipped = |done: bool| {
+        if done {
+            ""
+        } else {
+            " (skipped: none in the scene)"
+        }
+    };
     println!("parse           {:9.4} s", load.parse_seconds);
     println!(
         "load meshes     {:9.4} s  {} OBJ files{}",
@@ -95,10 +101,18 @@ fn print_phases(scene: &Scene, world: &World, world_seconds: f64, render_seconds
     println!("render          {render_seconds:9.4} s");
     println!(
         "lens sampling   {}",
-        if plan.lens { "on" } else { "off (no depth of field)" }
+        if plan.lens {
+            "on"
+        } else {
+            "off (no depth of field)"
+        }
     );
     println!(
         "time sampling   {}",
-        if plan.time { "on" } else { "off (nothing moves)" }
+        if plan.time {
+            "on"
+        } else {
+            "off (nothing moves)"
+        }
     );
 }

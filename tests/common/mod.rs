@@ -3,6 +3,10 @@
 
 #![allow(dead_code)]
 
+mod shapes;
+#[allow(unused_imports)]
+pub use shapes::*;
+
 use std::path::{Path, PathBuf};
 
 use pathtracer::color::Color;
