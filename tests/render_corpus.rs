@@ -7,6 +7,7 @@ mod common;
 
 use pathtracer::integrator::Integrator;
 use pathtracer::render::{RenderSettings, render};
+use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::{LoadOptions, load_scene};
 use pathtracer::world::World;
 
@@ -42,6 +43,7 @@ fn every_shared_scene_renders_without_nan_or_inf_samples() {
             seed: 1,
             threads: None,
             integrator: Integrator::Original,
+            sampler: SamplerKind::Sobol,
             progress: false,
         };
         let world = World::build(&scene);
