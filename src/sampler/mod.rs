@@ -99,15 +99,21 @@ fn group_seed(pixel_seed: u64, group: u32, sample_index: u64) -> u64 {
     mix64(pixel_seed ^ mix64((index_block << 32) | group as u64))
 }
 
-/// The shuffled Sobol' index and scrambled value of one dimension in a group.
-fn group_value(group_seed: u64, shuffled_index: u32, dimension_in_group: usize) -> f64 {
-    let dimension_seed = mix64(group_seed.wrapping_add(1 + dimension_in_group as u64));
-    let point = sobol::sobol(shuffled_index, dimension_in_group);
-    let scrambled = nested_uniform_scramble(point, dimension_seed as u32);
-    // Owen scrambling randomises every digit; the 21 digits below the 32
-    // generated ones are drawn from a hash of the scrambled prefix.
-    let low = mix64(dimension_seed ^ scrambled as u64) >> 43;
-    let bits = ((scrambled as u64) << 21) | low;
+/// The scrambled values of the four dimensions of a group for one shuffled
+/// Sobol' index, as 53-bit binary fractions.
+fn group_values(group_seed: u64, shuffled_index: u32) -> [u64; sobol::DIMENSIONS] {
+    let points = sobol::sobol_all(shuffled_index);
+    std::array::from_fn(|dimension| {
+        let dimension_seed = mix64(group_seed.wrapping_add(1 + dimension as u64));
+        let scrambled = nested_uniform_scramble(points[dimension], dimension_seed as u32);
+        // Owen scrambling randomises every digit; the 21 digits below the 32
+        // generated ones are drawn from a hash of the scrambled prefix.
+        let low = (dimension_seed ^ scrambled as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 43;
+        ((scrambled as u64) << 21) | low
+    })
+}
+
+fn to_unit(bits: u64) -> f64 {
     bits as f64 * (1.0 / (1u64 << 53) as f64)
 }
 
@@ -124,11 +130,7 @@ pub fn sobol_sample(pixel_index: u64, sample_index: u64, dimension: u32, seed: u
     let group = dimension / sobol::DIMENSIONS as u32;
     let group_seed = group_seed(pixel_seed(pixel_index, seed), group, sample_index);
     let shuffled_index = shuffle_index(group_seed, sample_index);
-    group_value(
-        group_seed,
-        shuffled_index,
-        dimension as usize % sobol::DIMENSIONS,
-    )
+    to_unit(group_values(group_seed, shuffled_index)[dimension as usize % sobol::DIMENSIONS])
 }
 
 /// The Sobol' values of one pixel sample, in dimension order; equal to
@@ -138,8 +140,8 @@ pub struct SobolStream {
     pixel_seed: u64,
     sample_index: u64,
     dimension: u32,
-    group_seed: u64,
-    shuffled_index: u32,
+    /// The values of the current group of four dimensions.
+    values: [u64; sobol::DIMENSIONS],
 }
 
 impl SobolStream {
@@ -148,8 +150,7 @@ impl SobolStream {
             pixel_seed: pixel_seed(pixel_index, seed),
             sample_index,
             dimension: 0,
-            group_seed: 0,
-            shuffled_index: 0,
+            values: [0; sobol::DIMENSIONS],
         }
     }
 
@@ -163,11 +164,12 @@ impl SobolStream {
         let dimension_in_group = self.dimension as usize % sobol::DIMENSIONS;
         if dimension_in_group == 0 {
             let group = self.dimension / sobol::DIMENSIONS as u32;
-            self.group_seed = group_seed(self.pixel_seed, group, self.sample_index);
-            self.shuffled_index = shuffle_index(self.group_seed, self.sample_index);
+            let group_seed = group_seed(self.pixel_seed, group, self.sample_index);
+            let shuffled_index = shuffle_index(group_seed, self.sample_index);
+            self.values = group_values(group_seed, shuffled_index);
         }
         self.dimension = self.dimension.wrapping_add(1);
-        group_value(self.group_seed, self.shuffled_index, dimension_in_group)
+        to_unit(self.values[dimension_in_group])
     }
 
     /// The next two dimensions, starting from an even one.

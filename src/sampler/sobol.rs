@@ -74,9 +74,33 @@ pub fn sobol(index: u32, dimension: usize) -> u32 {
     value
 }
 
+/// The points of all four dimensions for one index, in one pass over its bits.
+pub fn sobol_all(index: u32) -> [u32; DIMENSIONS] {
+    let mut bits = index;
+    let mut value = [0u32; DIMENSIONS];
+    while bits != 0 {
+        let k = bits.trailing_zeros() as usize;
+        for (v, directions) in value.iter_mut().zip(DIRECTIONS.iter()) {
+            *v ^= directions[k];
+        }
+        bits &= bits - 1;
+    }
+    value
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn all_dimensions_at_once_equal_each_dimension_alone() {
+        for index in [0u32, 1, 7, 12345, 0xdead_beef, u32::MAX] {
+            let all = sobol_all(index);
+            for (dimension, value) in all.iter().enumerate() {
+                assert_eq!(*value, sobol(index, dimension));
+            }
+        }
+    }
 
     #[test]
     fn dimension_zero_is_bit_reversal() {
