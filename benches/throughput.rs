@@ -188,6 +188,7 @@ fn renders(c: &mut Criterion) {
             integrator: Integrator::Original,
             sampler: SamplerKind::Sobol,
             progress: false,
+            clamp: None,
         };
         let samples = settings.width as u64 * settings.height as u64 * settings.spp as u64;
         group.throughput(Throughput::Elements(samples));

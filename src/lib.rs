@@ -8,6 +8,7 @@
 //! [`metrics`] compares images (RMSE, relative MSE, PSNR, SSIM).
 
 pub mod accel;
+pub mod adaptive;
 pub mod camera;
 pub mod color;
 pub mod converge;

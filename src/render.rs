@@ -30,6 +30,8 @@ pub struct RenderSettings {
     pub sampler: SamplerKind,
     /// Print a progress line with an ETA (only on a terminal).
     pub progress: bool,
+    /// Scale samples down to this luminance (biased; `None`: off).
+    pub clamp: Option<f64>,
 }
 
 /// What a render did.
@@ -40,6 +42,8 @@ pub struct RenderStats {
     pub samples: u64,
     /// NaN or infinite samples that were dropped.
     pub dropped: u64,
+    /// Samples above the firefly bound (see `film::FIREFLY_FACTOR`).
+    pub fireflies: u64,
 }
 
 impl RenderStats {
@@ -62,7 +66,8 @@ pub fn render(
     Ok((film.to_image(), stats))
 }
 
-/// Adds the pixel samples with indices in `samples` to `film`. Sample `i` of a
+/// Adds the pixel samples with indices in `samples` to the pixels of `film`
+/// that have not converged. Sample `i` of a
 /// pixel is the same whichever call renders it, so rendering 0..4 and then
 /// 4..8 gives the image of rendering 0..8.
 pub fn render_into(
@@ -77,7 +82,7 @@ pub fn render_into(
     let camera = Camera::new(&scene.camera, width as u32, height as u32);
     let view = SceneView::new(scene, world);
     let plan = SamplingPlan::for_scene(scene);
-    let before = (film.samples(), film.dropped());
+    let before = (film.samples(), film.dropped(), film.fireflies());
     let rows_done = AtomicUsize::new(0);
     let start = Instant::now();
     let mut builder = rayon::ThreadPoolBuilder::new();
@@ -99,6 +104,9 @@ pub fn render_into(
                 .for_each(|(row, pixels)| {
                     let y = height - 1 - row;
                     for (x, pixel) in pixels.iter_mut().enumerate() {
+                        if pixel.converged {
+                            continue;
+                        }
                         let pixel_index = (row * width + x) as u64;
                         for sample in samples.clone() {
                             let context = PixelSample {
@@ -107,7 +115,8 @@ pub fn render_into(
                                 pixel_index,
                                 sample,
                             };
-                            pixel.add(trace_sample(&view, &camera, plan, settings, context));
+                            let value = trace_sample(&view, &camera, plan, settings, context);
+                            pixel.add(value, settings.clamp);
                         }
                     }
                     rows_done.fetch_add(1, Ordering::Relaxed);
@@ -121,6 +130,7 @@ pub fn render_into(
         seconds: start.elapsed().as_secs_f64(),
         samples: film.samples() - before.0,
         dropped: film.dropped() - before.1,
+        fireflies: film.fireflies() - before.2,
     })
 }
 

@@ -45,6 +45,7 @@ fn every_shared_scene_renders_without_nan_or_inf_samples() {
             integrator: Integrator::Original,
             sampler: SamplerKind::Sobol,
             progress: false,
+            clamp: None,
         };
         let world = World::build(&scene);
         let (image, stats) = match render(&scene, &world, &settings) {

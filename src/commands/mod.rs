@@ -57,6 +57,10 @@ pub struct SamplingOptions {
     /// `independent` (one random generator per pixel sample).
     #[arg(long, default_value = "sobol", value_parser = parse_sampler)]
     pub sampler: SamplerKind,
+    /// BIASED: scale every sample down to at most this luminance, trading
+    /// energy for the absence of fireflies. Off by default.
+    #[arg(long)]
+    pub clamp: Option<f64>,
     #[command(flatten)]
     pub scene: SceneOptions,
 }
@@ -72,6 +76,7 @@ impl SamplingOptions {
             integrator: Integrator::Original,
             sampler: self.sampler,
             progress,
+            clamp: self.clamp,
         }
     }
 }

@@ -5,8 +5,10 @@ use std::time::Instant;
 
 use clap::Args;
 
+use pathtracer::adaptive::{StoppingRule, render_adaptive};
+use pathtracer::film::Film;
 use pathtracer::image_io::{check_writable, write_image};
-use pathtracer::render::{SamplingPlan, render};
+use pathtracer::render::{SamplingPlan, render_into};
 use pathtracer::scene::model::Scene;
 use pathtracer::world::World;
 
@@ -18,9 +20,17 @@ pub struct RenderArgs {
     /// Output image (.bmp, .png or .pfm); default output/<scene name>.bmp.
     #[arg(short, long)]
     output: Option<PathBuf>,
-    /// Samples per pixel in total (spread over the 2x2 sub-pixels).
+    /// Samples per pixel in total (spread over the 2x2 sub-pixels); with
+    /// --target-error or --time-budget, the most that any pixel gets.
     #[arg(long, default_value_t = 40, value_parser = clap::value_parser!(u32).range(1..))]
     spp: u32,
+    /// Stop each pixel once its relative error (standard error of the mean
+    /// luminance over the mean) is at most this, e.g. 0.01.
+    #[arg(long)]
+    target_error: Option<f64>,
+    /// Stop the whole render within this many seconds of rendering.
+    #[arg(long)]
+    time_budget: Option<f64>,
     /// Gamma for 8-bit output (2.2 for smallpt-style images; default: none,
     /// as the PA framework writer).
     #[arg(long)]
@@ -49,21 +59,37 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let world_start = Instant::now();
     let world = World::build(&scene);
     let world_seconds = world_start.elapsed().as_secs_f64();
-    let (image, stats) = render(&scene, &world, &settings)?;
+    let rule = StoppingRule {
+        target_error: args.target_error,
+        time_budget: args.time_budget,
+    };
+    let mut film = Film::new(settings.width as usize, settings.height as usize);
+    let stats = if rule == StoppingRule::default() {
+        render_into(&scene, &world, &settings, &mut film, 0..settings.spp)?
+    } else {
+        render_adaptive(&scene, &world, &settings, rule, &mut film)?
+    };
+    let image = film.to_image();
     if args.stats {
         print_phases(&scene, &world, world_seconds, stats.seconds);
     }
     write_image(&output, &image, args.gamma)?;
+    let pixels = (settings.width as u64 * settings.height as u64).max(1);
     println!(
-        "{}: {}x{}, {} spp, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped",
+        "{}: {}x{}, {:.1} spp spent, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped, {} fireflies{}",
         output.display(),
         settings.width,
         settings.height,
-        settings.spp,
+        stats.samples as f64 / pixels as f64,
         stats.seconds,
         started.elapsed().as_secs_f64(),
         stats.samples_per_second() / 1e6,
-        stats.dropped
+        stats.dropped,
+        stats.fireflies,
+        match settings.clamp {
+            Some(c) => format!(" (clamped at luminance {c}: biased)"),
+            None => String::new(),
+        }
     );
     Ok(())
 }
