@@ -564,14 +564,20 @@ def metrics(test, reference):
     }
 
 
-def render_mitsuba(mi, scene_dict, spp, seed):
-    scene_dict["sensor"]["sampler"]["sample_count"] = spp
+def render_mitsuba(mi, scene_dict, spp, seed, pass_spp):
+    """Renders in passes of at most pass_spp samples (the JIT variants keep one
+    lane per sample in memory) and averages them: with a box filter every pass
+    is a plain mean, so the average of equal passes is the mean of all samples."""
+    passes = [pass_spp] * (spp // pass_spp) + ([spp % pass_spp] if spp % pass_spp else [])
     t0 = time.perf_counter()
     loaded = mi.load_dict(scene_dict)
     t1 = time.perf_counter()
-    image = np.array(mi.render(loaded, spp=spp, seed=seed), dtype=np.float32)
+    total = None
+    for index, n in enumerate(passes):
+        image = np.array(mi.render(loaded, spp=n, seed=seed * 7919 + index), dtype=np.float64)
+        total = image * n if total is None else total + image * n
     t2 = time.perf_counter()
-    return image[..., :3], t1 - t0, t2 - t1
+    return (total / spp)[..., :3].astype(np.float32), t1 - t0, t2 - t1
 
 
 def render_ours(args, out_path):
@@ -609,6 +615,9 @@ def main():
     parser.add_argument("--height", type=int, default=192)
     parser.add_argument("--variant", default="scalar_rgb", choices=["scalar_rgb", "llvm_ad_rgb"])
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--pass-spp", type=int, default=None,
+                        help="Mitsuba samples per render pass (default: all at once for "
+                             "scalar_rgb, 64 for llvm_ad_rgb)")
     parser.add_argument("--out", default="output/crosscheck")
     parser.add_argument("--mitsuba-only", action="store_true", help="skip our renderer")
     parser.add_argument("--tolerance", type=float, default=0.03,
@@ -626,6 +635,8 @@ def main():
                 break
     import mitsuba as mi
     mi.set_variant(args.variant)
+    if args.pass_spp is None:
+        args.pass_spp = 64 if args.variant.startswith("llvm") else max(args.spp, args.reference_spp)
 
     scene = Scene(args.scene)
     tmpdir = os.path.join(args.out, "mitsuba_inputs")
@@ -640,9 +651,10 @@ def main():
 
     print(f"Mitsuba reference at {args.reference_spp} spp ...", flush=True)
     reference, ref_load, ref_time = render_mitsuba(mi, scene_dict, args.reference_spp,
-                                                   args.seed + 1000)
+                                                   args.seed + 1000, args.pass_spp)
     print(f"Mitsuba at {args.spp} spp ...", flush=True)
-    mitsuba, mts_load, mts_time = render_mitsuba(mi, scene_dict, args.spp, args.seed)
+    mitsuba, mts_load, mts_time = render_mitsuba(mi, scene_dict, args.spp, args.seed,
+                                                 args.pass_spp)
     write_pfm(os.path.join(args.out, "mitsuba_reference.pfm"), reference)
     write_pfm(os.path.join(args.out, f"mitsuba_{args.spp}spp.pfm"), mitsuba)
     preview(mi, os.path.join(args.out, "mitsuba_reference.png"), reference)
@@ -651,6 +663,7 @@ def main():
     report = {
         "scene": args.scene, "width": args.width, "height": args.height, "spp": args.spp,
         "reference_spp": args.reference_spp, "seed": args.seed, "variant": args.variant,
+        "mitsuba_pass_spp": args.pass_spp,
         "mitsuba_version": mi.__version__, "cpu_count": os.cpu_count(),
         "relative_mse_epsilon": RELATIVE_MSE_EPSILON,
         "near_plane_check": near,
