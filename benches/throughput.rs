@@ -12,6 +12,7 @@ use pathtracer::integrator::Integrator;
 use pathtracer::math::{Ray, Vec3};
 use pathtracer::render::{RenderSettings, render};
 use pathtracer::rng::Rng;
+use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{
     CameraDesc, CurveKind, Dialect, Material, MeshData, Object, Profile, Scene,
 };
@@ -51,6 +52,7 @@ fn scene_with(root: Object) -> Scene {
         dialect: Dialect::Canonical,
         warnings: Vec::new(),
         unsupported: Vec::new(),
+        load: Default::default(),
     }
 }
 
@@ -184,6 +186,7 @@ fn renders(c: &mut Criterion) {
             seed: 0,
             threads: None,
             integrator: Integrator::Original,
+            sampler: SamplerKind::Sobol,
             progress: false,
         };
         let samples = settings.width as u64 * settings.height as u64 * settings.spp as u64;

@@ -20,6 +20,7 @@ pub mod metrics;
 pub mod plot;
 pub mod render;
 pub mod rng;
+pub mod sampler;
 pub mod sampling;
 pub mod scene;
 pub mod shading;

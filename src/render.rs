@@ -12,7 +12,7 @@ use crate::camera::Camera;
 use crate::film::Film;
 use crate::image_io::Image;
 use crate::integrator::{Integrator, SceneView};
-use crate::rng::Rng;
+use crate::sampler::{Sampler, SamplerKind};
 use crate::scene::model::{Object, Scene};
 use crate::world::World;
 
@@ -26,6 +26,8 @@ pub struct RenderSettings {
     /// Worker threads; `None`: one per core.
     pub threads: Option<usize>,
     pub integrator: Integrator,
+    /// Where sample values come from (independent random or Sobol').
+    pub sampler: SamplerKind,
     /// Print a progress line with an ETA (only on a terminal).
     pub progress: bool,
 }
@@ -74,7 +76,7 @@ pub fn render_into(
     let height = film.height;
     let camera = Camera::new(&scene.camera, width as u32, height as u32);
     let view = SceneView::new(scene, world);
-    let uses_time = has_motion(&scene.root);
+    let plan = SamplingPlan::for_scene(scene);
     let before = (film.samples(), film.dropped());
     let rows_done = AtomicUsize::new(0);
     let start = Instant::now();
@@ -99,21 +101,13 @@ pub fn render_into(
                     for (x, pixel) in pixels.iter_mut().enumerate() {
                         let pixel_index = (row * width + x) as u64;
                         for sample in samples.clone() {
-                            let mut rng =
-                                Rng::for_sample(pixel_index, sample as u64, settings.seed);
-                            let sub = sample % 4;
-                            let film_x =
-                                x as f64 + (0.5 + (sub % 2) as f64 + tent(rng.next_f64())) * 0.5;
-                            let film_y =
-                                y as f64 + (0.5 + (sub / 2) as f64 + tent(rng.next_f64())) * 0.5;
-                            let lens = if camera.has_lens() {
-                                [rng.next_f64(), rng.next_f64()]
-                            } else {
-                                [0.5, 0.5]
+                            let context = PixelSample {
+                                x,
+                                y,
+                                pixel_index,
+                                sample,
                             };
-                            let time = if uses_time { rng.next_f64() } else { 0.0 };
-                            let ray = camera.ray(film_x, film_y, lens, time);
-                            pixel.add(settings.integrator.radiance(&view, ray, &mut rng));
+                            pixel.add(trace_sample(&view, &camera, plan, settings, context));
                         }
                     }
                     rows_done.fetch_add(1, Ordering::Relaxed);
@@ -130,6 +124,45 @@ pub fn render_into(
     })
 }
 
+/// Which sample of which pixel is traced.
+#[derive(Clone, Copy)]
+struct PixelSample {
+    x: usize,
+    /// Row from the bottom of the image.
+    y: usize,
+    pixel_index: u64,
+    sample: u32,
+}
+
+/// One camera sample: sub-pixel `sample mod 4` of the 2x2 grid with the tent
+/// filter, lens and time only where the scene needs them.
+fn trace_sample(
+    view: &SceneView,
+    camera: &Camera,
+    plan: SamplingPlan,
+    settings: &RenderSettings,
+    at: PixelSample,
+) -> crate::color::Color {
+    let mut sampler = Sampler::new(
+        settings.sampler,
+        at.pixel_index,
+        at.sample as u64,
+        settings.seed,
+    );
+    let sub = at.sample % 4;
+    let [jitter_x, jitter_y] = sampler.next_2d();
+    let film_x = at.x as f64 + (0.5 + (sub % 2) as f64 + tent(jitter_x)) * 0.5;
+    let film_y = at.y as f64 + (0.5 + (sub / 2) as f64 + tent(jitter_y)) * 0.5;
+    let lens = if plan.lens {
+        sampler.next_2d()
+    } else {
+        [0.5, 0.5]
+    };
+    let time = if plan.time { sampler.next_f64() } else { 0.0 };
+    let ray = camera.ray(film_x, film_y, lens, time);
+    settings.integrator.radiance(view, ray, &mut sampler)
+}
+
 /// smallpt's tent filter: maps a uniform number in [0, 1) to an offset in
 /// (-1, 1) with a triangular density.
 pub fn tent(u: f64) -> f64 {
@@ -138,6 +171,24 @@ pub fn tent(u: f64) -> f64 {
         r.sqrt() - 1.0
     } else {
         1.0 - (2.0 - r).sqrt()
+    }
+}
+
+/// Which sample dimensions a scene needs: a scene pays only for what it uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SamplingPlan {
+    /// Lens samples (depth of field).
+    pub lens: bool,
+    /// Shutter-time samples (moving spheres).
+    pub time: bool,
+}
+
+impl SamplingPlan {
+    pub fn for_scene(scene: &Scene) -> SamplingPlan {
+        SamplingPlan {
+            lens: scene.camera.lens_radius >= crate::camera::MIN_LENS_RADIUS,
+            time: has_motion(&scene.root),
+        }
     }
 }
 

@@ -2,7 +2,7 @@
 //! (texture or constant), and normals oriented towards the incoming ray.
 
 use crate::color::Color;
-use crate::math::{Point3, Ray, Vec3};
+use crate::math::{Point3, Ray, Vec3, offset_origin};
 use crate::scene::model::{Material, Scene};
 use crate::world::{UvMapping, WorldHit};
 
@@ -58,17 +58,10 @@ impl<'a> Shading<'a> {
     }
 
     /// The origin of a ray leaving this point in `direction`: pushed off the
-    /// surface along the geometric normal, to the side the ray goes to, by an
-    /// amount relative to the point's magnitude (f64 hit points are accurate to
-    /// far better than 1e-7 relative), so that it cannot re-hit the surface.
+    /// surface along the geometric normal, to the side the ray goes to (see
+    /// [`offset_origin`]), so that it cannot re-hit the surface.
     pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
-        let magnitude = self.point.amax().max(1e-6);
-        let offset = self.geometric * (1e-7 * magnitude);
-        if direction.dot(&self.geometric) >= 0.0 {
-            self.point + offset
-        } else {
-            self.point - offset
-        }
+        offset_origin(&self.point, &self.geometric, direction)
     }
 }
 

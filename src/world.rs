@@ -9,7 +9,7 @@ use crate::geometry::{
     Disk, Intersection, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, SurfaceHit, Transform,
     Triangle,
 };
-use crate::math::{Aabb, Point3, Ray, Vec3};
+use crate::math::{Aabb, Point3, Ray, Vec3, offset_origin};
 use crate::scene::model::{Object, Scene};
 
 /// How a hit's `uv` is meant to be read by a texture lookup.
@@ -40,6 +40,20 @@ pub struct WorldHit {
     pub primitive: usize,
     /// Element within the primitive (triangle of a mesh), else 0.
     pub element: u32,
+}
+
+impl WorldHit {
+    /// Origin for a ray leaving the hit in `direction` (either side of the surface):
+    /// the point offset along the geometric normal by [`offset_origin`]. Rays
+    /// spawned from it do not re-hit this surface, even with `t_min = 0`.
+    pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
+        offset_origin(&self.point, &self.geometric_normal, direction)
+    }
+
+    /// A ray leaving the hit in `direction` at shutter time `time`.
+    pub fn spawn_ray(&self, direction: Vec3, time: f64) -> Ray {
+        Ray::new(self.spawn_origin(&direction), direction, time)
+    }
 }
 
 /// One shape with its material and optional object-to-world transform.
@@ -192,6 +206,17 @@ impl World {
             })
     }
 
+    /// Triangles of all mesh instances (an instanced mesh counts each time).
+    pub fn triangle_count(&self) -> usize {
+        self.primitives
+            .iter()
+            .map(|p| match &p.shape {
+                Shape::Mesh { mesh, .. } => mesh.triangle_count(),
+                _ => 0,
+            })
+            .sum()
+    }
+
     /// Bounds of the bounded primitives (planes excluded).
     pub fn bounds(&self) -> Aabb {
         self.bvh.bounds()
@@ -288,6 +313,101 @@ impl Builder {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    use crate::color::Color;
+    use crate::math::Matrix;
+    use crate::scene::model::{CameraDesc, Dialect, MeshData};
+
+    fn scene(root: Object) -> Scene {
+        Scene {
+            camera: CameraDesc {
+                center: Point3::zeros(),
+                direction: -Vec3::z(),
+                up: Vec3::y(),
+                width: 4,
+                height: 4,
+                fov: None,
+                canvas_distance: 0.0,
+                focus_distance: 1.0,
+                lens_radius: 0.0,
+            },
+            background: Color::BLACK,
+            materials: Vec::new(),
+            textures: Vec::new(),
+            lights: Vec::new(),
+            root,
+            dialect: Dialect::Canonical,
+            warnings: Vec::new(),
+            unsupported: Vec::new(),
+            load: Default::default(),
+        }
+    }
+
+    fn translate(offset: Vec3, child: Object) -> Object {
+        let matrix = Matrix::new_translation(&offset);
+        Object::Transform {
+            matrix,
+            inverse: Matrix::new_translation(&-offset),
+            child: Box::new(child),
+        }
+    }
+
+    #[test]
+    fn build_composes_transforms_and_shares_meshes() {
+        let data = Arc::new(MeshData {
+            positions: vec![Point3::zeros(), Point3::x(), Point3::y()],
+            normals: None,
+            uvs: None,
+            triangles: vec![[0, 1, 2]],
+        });
+        let mesh = |material| Object::Mesh {
+            mesh: Arc::clone(&data),
+            smooth: false,
+            material,
+        };
+        let root = Object::Group(vec![
+            translate(
+                Vec3::new(0.0, 0.0, -5.0),
+                translate(Vec3::new(10.0, 0.0, 0.0), mesh(1)),
+            ),
+            translate(Vec3::zeros(), mesh(2)),
+            Object::Sphere {
+                center: Point3::zeros(),
+                radius: 0.0,
+                motion: Vec3::zeros(),
+                material: 3,
+            },
+            Object::Plane {
+                normal: Vec3::y(),
+                offset: -1.0,
+                material: 4,
+            },
+        ]);
+        let world = World::build(&scene(root));
+        // The zero-radius sphere is dropped; the identity transform is not stored.
+        assert_eq!(world.primitives().len(), 3);
+        assert!(world.primitive(1).transform.is_none());
+        let (Shape::Mesh { mesh: a, .. }, Shape::Mesh { mesh: b, .. }) =
+            (&world.primitive(0).shape, &world.primitive(1).shape)
+        else {
+            panic!("meshes expected");
+        };
+        assert!(Arc::ptr_eq(a, b), "one geometry mesh per MeshData");
+        // Nested translations compose: the first instance sits at (10, 0, -5).
+        let ray = Ray::new(Point3::new(10.25, 0.25, 0.0), -Vec3::z(), 0.0);
+        let hit = world.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+        assert_eq!(hit.material, 1);
+        assert!((hit.t - 5.0).abs() < 1e-12);
+        assert!((hit.point - Point3::new(10.25, 0.25, -5.0)).norm() < 1e-12);
+        let down = Ray::new(Point3::new(3.0, 0.0, 3.0), -Vec3::y(), 0.0);
+        assert_eq!(
+            world.intersect(&down, 0.0, f64::INFINITY).unwrap().material,
+            4
+        );
+        assert!(world.occluded(&down, 0.0, 2.0));
+        assert!(!world.occluded(&down, 0.0, 0.5));
+        assert!((world.bounds().max.x - 11.0).abs() < 1e-12);
+    }
 
     #[test]
     fn world_is_send_and_sync() {

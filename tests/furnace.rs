@@ -7,6 +7,7 @@ use pathtracer::color::Color;
 use pathtracer::integrator::{Integrator, SceneView};
 use pathtracer::math::{Ray, Vec3};
 use pathtracer::rng::Rng;
+use pathtracer::sampler::Sampler;
 use pathtracer::scene::model::{Material, Object};
 use pathtracer::world::World;
 
@@ -30,7 +31,8 @@ fn furnace_mean(material: Material, paths: u64) -> (Color, f64) {
             rng.next_f64() - 0.5,
         );
         let ray = Ray::new(Vec3::new(1.0, 2.0, -3.0), d.normalize(), 0.0);
-        let l = Integrator::Original.radiance(&view, ray, &mut rng);
+        let mut sampler = Sampler::Independent(rng);
+        let l = Integrator::Original.radiance(&view, ray, &mut sampler);
         sum += l;
         sum_sq += l.r * l.r;
     }

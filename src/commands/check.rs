@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use pathtracer::scene::load_scene;
+use pathtracer::scene::{load_scene, summary};
 
 use super::SceneOptions;
 
@@ -24,7 +24,7 @@ pub fn run(args: &CheckArgs) -> Result<(), String> {
                 for warning in &scene.warnings {
                     eprintln!("warning: {warning}");
                 }
-                println!("{}: {} materials", path.display(), scene.materials.len());
+                println!("{}: {}", path.display(), summary(&scene));
             }
             Err(error) => {
                 eprintln!("error: {error}");

@@ -11,6 +11,7 @@ use clap::Args;
 
 use pathtracer::integrator::Integrator;
 use pathtracer::render::RenderSettings;
+use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Dialect, Scene};
 use pathtracer::scene::{LoadOptions, load_scene};
 
@@ -52,6 +53,10 @@ pub struct SamplingOptions {
     /// Image height, overriding the scene's camera.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=32768))]
     pub height: Option<u32>,
+    /// Sample values: `sobol` (Owen-scrambled Sobol', the default) or
+    /// `independent` (one random generator per pixel sample).
+    #[arg(long, default_value = "sobol", value_parser = parse_sampler)]
+    pub sampler: SamplerKind,
     #[command(flatten)]
     pub scene: SceneOptions,
 }
@@ -65,9 +70,17 @@ impl SamplingOptions {
             seed: self.seed,
             threads: self.threads.map(|t| t as usize),
             integrator: Integrator::Original,
+            sampler: self.sampler,
             progress,
         }
     }
+}
+
+fn parse_sampler(name: &str) -> Result<SamplerKind, String> {
+    SamplerKind::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = SamplerKind::ALL.iter().map(|k| k.name()).collect();
+        format!("unknown sampler '{name}' (one of: {})", names.join(", "))
+    })
 }
 
 fn parse_dialect(name: &str) -> Result<Dialect, String> {

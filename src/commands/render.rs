@@ -6,7 +6,8 @@ use std::time::Instant;
 use clap::Args;
 
 use pathtracer::image_io::{check_writable, write_image};
-use pathtracer::render::render;
+use pathtracer::render::{SamplingPlan, render};
+use pathtracer::scene::model::Scene;
 use pathtracer::world::World;
 
 use super::{SamplingOptions, default_output, load_for_render};
@@ -27,6 +28,9 @@ pub struct RenderArgs {
     /// Do not print the progress line.
     #[arg(long)]
     quiet: bool,
+    /// Print the time of each phase and what the scene did not need.
+    #[arg(long)]
+    stats: bool,
     #[command(flatten)]
     sampling: SamplingOptions,
 }
@@ -42,8 +46,13 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let scene = load_for_render(&args.scene, &args.sampling.scene)?;
     let settings = args.sampling.settings(&scene, args.spp, !args.quiet);
     check_writable(&output, settings.width as usize, settings.height as usize)?;
+    let world_start = Instant::now();
     let world = World::build(&scene);
+    let world_seconds = world_start.elapsed().as_secs_f64();
     let (image, stats) = render(&scene, &world, &settings)?;
+    if args.stats {
+        print_phases(&scene, &world, world_seconds, stats.seconds);
+    }
     write_image(&output, &image, args.gamma)?;
     println!(
         "{}: {}x{}, {} spp, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped",
@@ -57,4 +66,53 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         stats.dropped
     );
     Ok(())
+}
+
+/// `--stats`: the time of each phase, and the machinery a scene did not need.
+fn print_phases(scene: &Scene, world: &World, world_seconds: f64, render_seconds: f64) {
+    let load = &scene.load;
+    let plan = SamplingPlan::for_scene(scene);
+    let skipped = |done: bool| {
+        if done {
+            ""
+        } else {
+            " (skipped: none in the scene)"
+        }
+    };
+    println!("parse           {:9.4} s", load.parse_seconds);
+    println!(
+        "load meshes     {:9.4} s  {} OBJ files{}",
+        load.mesh_seconds,
+        load.meshes_loaded,
+        skipped(load.meshes_loaded > 0)
+    );
+    println!(
+        "load textures   {:9.4} s  {} images{}",
+        load.texture_seconds,
+        load.textures_loaded,
+        skipped(load.textures_loaded > 0)
+    );
+    println!(
+        "build world     {:9.4} s  {} primitives, {} triangles in BVHs",
+        world_seconds,
+        world.primitives().len(),
+        world.triangle_count()
+    );
+    println!("render          {render_seconds:9.4} s");
+    println!(
+        "lens sampling   {}",
+        if plan.lens {
+            "on"
+        } else {
+            "off (no depth of field)"
+        }
+    );
+    println!(
+        "time sampling   {}",
+        if plan.time {
+            "on"
+        } else {
+            "off (nothing moves)"
+        }
+    );
 }

@@ -115,3 +115,45 @@ impl Mesh {
         surface
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::{Point3, Vec3};
+
+    #[test]
+    fn smooth_normals_and_uvs_are_interpolated() {
+        let data = MeshData {
+            positions: vec![Point3::zeros(), Point3::x(), Point3::y()],
+            normals: Some(vec![Vec3::z(), Vec3::new(1.0, 0.0, 1.0), Vec3::z()]),
+            uvs: Some(vec![[0.0, 0.0], [2.0, 0.0], [0.0, 4.0]]),
+            triangles: vec![[0, 1, 2]],
+        };
+        let mesh = Mesh::new(Arc::new(data));
+        let ray = Ray::new(Point3::new(0.5, 0.25, 1.0), -Vec3::z(), 0.0);
+        let hit = mesh.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+        let smooth = mesh.surface(&ray, &hit, true);
+        let flat = mesh.surface(&ray, &hit, false);
+        assert_eq!(flat.shading_normal, Vec3::z());
+        let expected =
+            (Vec3::z() * 0.25 + Vec3::new(1.0, 0.0, 1.0) * 0.5 + Vec3::z() * 0.25).normalize();
+        assert!((smooth.shading_normal - expected).norm() < 1e-12);
+        assert_eq!(smooth.geometric_normal, Vec3::z());
+        assert!((smooth.uv[0] - 1.0).abs() < 1e-12 && (smooth.uv[1] - 1.0).abs() < 1e-12);
+        // du runs along x in this parametrisation.
+        assert!((smooth.tangent - Vec3::x()).norm() < 1e-12);
+    }
+
+    #[test]
+    fn out_of_range_indices_are_ignored() {
+        let data = MeshData {
+            positions: vec![Point3::zeros(), Point3::x(), Point3::y()],
+            normals: None,
+            uvs: None,
+            triangles: vec![[0, 1, 7], [0, 1, 2]],
+        };
+        let mesh = Mesh::new(Arc::new(data));
+        let ray = Ray::new(Point3::new(0.25, 0.25, 1.0), -Vec3::z(), 0.0);
+        assert_eq!(mesh.intersect(&ray, 0.0, f64::INFINITY).unwrap().index, 1);
+    }
+}

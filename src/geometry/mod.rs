@@ -6,6 +6,7 @@ pub mod curve;
 pub mod disk;
 pub mod mesh;
 pub mod plane;
+pub mod profile_seeds;
 pub mod rectangle;
 pub mod revolution;
 pub mod shape;

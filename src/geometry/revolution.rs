@@ -4,38 +4,25 @@
 //! The 3D problem is reduced to the (r, y) half-plane: the ray gives
 //! `r(t)^2 = (ox + t dx)^2 + (oz + t dz)^2` and `y(t) = oy + t dy`, and a hit solves
 //! `g(t, u) = (x(u)^2 - r(t)^2, y(u) - y(t)) = 0`. Deterministic seeds come from the
-//! ray against a cone-frustum tessellation of the profile (computed once), plus
-//! near misses of those frusta within their chord deviation (silhouettes). Newton
+//! ray against a cone-frustum tessellation of the profile (see `profile_seeds`). Newton
 //! then converges on the true curve; only roots with a small residual, `u` in
 //! [0, 1] and `t` in range are accepted, and the nearest wins. `theta` follows from
 //! the hit point.
 
 use std::f64::consts::PI;
 
-use super::curve::{Curve, Point2};
+use super::curve::Curve;
+use super::profile_seeds::{RadialRay, SeedTessellation};
 use super::{Intersection, SurfaceHit, fallback_tangent, normalize_or};
 use crate::math::{Aabb, Point3, Ray, Vec3, inverse_direction};
 use crate::scene::model::Profile;
 use crate::world::UvMapping;
 
-/// Frusta of the seeding tessellation.
-pub const SEED_SEGMENTS: usize = 128;
 /// At most this many seeds per ray are refined (further ones are dropped).
 const MAX_SEEDS: usize = 48;
 const MAX_ITERATIONS: usize = 32;
-
-#[derive(Clone, Copy, Debug)]
-struct Segment {
-    u0: f64,
-    u1: f64,
-    start: Point2,
-    end: Point2,
-    /// Bound on the distance between the curve piece and its chord.
-    deviation: f64,
-    y_min: f64,
-    y_max: f64,
-    r_max: f64,
-}
+/// Seeds farther than this (times the object size) beyond the best root are skipped.
+const SEED_MARGIN: f64 = 0.05;
 
 #[derive(Clone, Debug)]
 pub struct Revolution {
@@ -43,7 +30,10 @@ pub struct Revolution {
     bounds: Aabb,
     /// Size of the object, the unit of the tolerances.
     scale: f64,
-    segments: Vec<Segment>,
+    seeds: SeedTessellation,
+    /// +1 or -1: makes `dS/du x dS/dtheta` point out of the solid that the
+    /// profile bounds together with the axis, whichever way the profile runs.
+    orientation: f64,
 }
 
 impl Revolution {
@@ -64,41 +54,14 @@ impl Revolution {
             min: Point3::new(-radius, y_min, -radius),
             max: Point3::new(radius, y_max, radius),
         };
-        let segments = (0..SEED_SEGMENTS)
-            .map(|i| {
-                let u0 = i as f64 / SEED_SEGMENTS as f64;
-                let u1 = (i + 1) as f64 / SEED_SEGMENTS as f64;
-                let start = curve.evaluate(u0).0;
-                let end = curve.evaluate(u1).0;
-                let mut deviation: f64 = 0.0;
-                let mut y_lo = start.y.min(end.y);
-                let mut y_hi = start.y.max(end.y);
-                let mut r_hi = start.x.abs().max(end.x.abs());
-                for k in 1..8 {
-                    let p = curve.evaluate(u0 + (u1 - u0) * k as f64 / 8.0).0;
-                    deviation = deviation.max(distance_to_segment(&p, &start, &end));
-                    y_lo = y_lo.min(p.y);
-                    y_hi = y_hi.max(p.y);
-                    r_hi = r_hi.max(p.x.abs());
-                }
-                let deviation = 2.0 * deviation + 1e-9 * scale;
-                Segment {
-                    u0,
-                    u1,
-                    start,
-                    end,
-                    deviation,
-                    y_min: y_lo - deviation,
-                    y_max: y_hi + deviation,
-                    r_max: r_hi + deviation,
-                }
-            })
-            .collect();
+        let seeds = SeedTessellation::new(&curve, scale);
+        let orientation = outward_orientation(&curve);
         Some(Revolution {
             curve,
             bounds,
             scale,
-            segments,
+            seeds,
+            orientation,
         })
     }
 
@@ -122,18 +85,8 @@ impl Revolution {
         if !(t0.is_finite() && t1.is_finite()) {
             return None;
         }
-        let (y_a, y_b) = (o.y + t0 * d.y, o.y + t1 * d.y);
-        let (y_lo, y_hi) = (y_a.min(y_b), y_a.max(y_b));
-        // r(t)^2 = a t^2 + 2 b t + c.
-        let a = d.x * d.x + d.z * d.z;
-        let b = o.x * d.x + o.z * d.z;
-        let c = o.x * o.x + o.z * o.z;
-        let t_closest = if a > 0.0 { (-b / a).clamp(t0, t1) } else { t0 };
-        let r_min = (a * t_closest * t_closest + 2.0 * b * t_closest + c)
-            .max(0.0)
-            .sqrt();
         let slack = 1e-6 * (t1 - t0).abs() + 1e-12;
-        let ray_2d = RadialRay { o, d, a, b, c };
+        let ray_2d = RadialRay::new(ray);
 
         let mut seeds = [(0.0f64, 0.0f64); MAX_SEEDS];
         let mut count = 0usize;
@@ -143,20 +96,25 @@ impl Revolution {
                 count += 1;
             }
         };
-        for segment in &self.segments {
-            if segment.y_max < y_lo || segment.y_min > y_hi || segment.r_max < r_min {
-                continue;
-            }
-            segment_seeds(segment, &ray_2d, (t0, t1), self.scale, &mut push);
-        }
+        self.seeds
+            .seeds(&ray_2d, (t0 - slack, t1 + slack), &mut push);
 
+        // Nearest seeds first; Newton lands close to its seed, so once a root is
+        // found, seeds well beyond it cannot give a nearer one.
+        let seeds = &mut seeds[..count];
+        seeds.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        let margin = SEED_MARGIN * self.scale / ray.direction.norm();
         let mut best: Option<Intersection> = None;
-        for &(t, u) in &seeds[..count] {
+        for &(t, u) in seeds.iter() {
             let limit = best.map_or(t_max, |h| h.t);
-            if let Some((t, u)) = self.refine(&ray_2d, t, u) {
-                if t > t_min && t < limit {
-                    best = Some(Intersection::new(t, u, 0.0));
-                }
+            if t > limit + margin {
+                break;
+            }
+            if let Some((t, u)) = self.refine(&ray_2d, t, u)
+                && t > t_min
+                && t < limit
+            {
+                best = Some(Intersection::new(t, u, 0.0));
             }
         }
         best
@@ -226,9 +184,9 @@ impl Revolution {
         let (sin, cos) = theta.sin_cos();
         let point = Point3::new(p.x * cos, p.y, -p.x * sin);
         // dS/du x dS/dtheta = x(u) * m with m the rotated profile normal (-y', x').
-        let m = Vec3::new(-dp.y * cos, dp.x, dp.y * sin) * sign;
+        let m = Vec3::new(-dp.y * cos, dp.x, dp.y * sin) * (sign * self.orientation);
         let radial = Vec3::new(cos, 0.0, -sin);
-        let normal = normalize_or(m, radial * sign);
+        let normal = normalize_or(m, radial * (sign * self.orientation));
         let tangent = normalize_or(
             Vec3::new(dp.x * cos, dp.y, -dp.x * sin),
             fallback_tangent(&normal),
@@ -244,121 +202,135 @@ impl Revolution {
     }
 }
 
-/// The ray with its radial quadratic `r(t)^2 = a t^2 + 2 b t + c`.
-struct RadialRay {
-    o: Point3,
-    d: Vec3,
-    a: f64,
-    b: f64,
-    c: f64,
-}
-
-impl RadialRay {
-    fn radius(&self, t: f64) -> f64 {
-        (self.a * t * t + 2.0 * self.b * t + self.c).max(0.0).sqrt()
-    }
-}
-
-/// Seeds (t, u) from the ray against one frustum: exact crossings, or the point of
-/// closest approach when the ray passes within the segment's chord deviation.
-fn segment_seeds(
-    segment: &Segment,
-    ray: &RadialRay,
-    (t0, t1): (f64, f64),
-    scale: f64,
-    push: &mut impl FnMut(f64, f64),
-) {
-    let (x0, y0) = (segment.start.x, segment.start.y);
-    let (dx, dy) = (segment.end.x - x0, segment.end.y - y0);
-    let to_u = |s: f64| segment.u0 + s.clamp(0.0, 1.0) * (segment.u1 - segment.u0);
-    if dy.abs() <= 1e-12 * scale {
-        // An annulus in the plane y = y0.
-        if ray.d.y == 0.0 {
-            return;
-        }
-        let t = (y0 - ray.o.y) / ray.d.y;
-        let r = ray.radius(t);
-        let (lo, hi) = (x0.abs().min((x0 + dx).abs()), x0.abs().max((x0 + dx).abs()));
-        if r >= lo - segment.deviation && r <= hi + segment.deviation {
-            let s = if hi > lo { (r - lo) / (hi - lo) } else { 0.5 };
-            let s = if x0.abs() <= (x0 + dx).abs() {
-                s
-            } else {
-                1.0 - s
-            };
-            push(t, to_u(s));
-        }
-        return;
-    }
-    // Along the ray: s(t) = alpha + beta t, x(t) = x0 + dx s(t) = p + q t.
-    let beta = ray.d.y / dy;
-    let alpha = (ray.o.y - y0) / dy;
-    let p = x0 + dx * alpha;
-    let q = dx * beta;
-    // r(t)^2 - x(t)^2 = qa t^2 + 2 qb t + qc.
-    let qa = ray.a - q * q;
-    let qb = ray.b - p * q;
-    let qc = ray.c - p * p;
-    let mut found = false;
-    let accept = |t: f64, push: &mut dyn FnMut(f64, f64)| {
-        let s = alpha + beta * t;
-        if (-1e-6..=1.0 + 1e-6).contains(&s) {
-            push(t, to_u(s));
-            true
-        } else {
-            false
-        }
+/// The sign that turns the profile's left normal `(-y', x')` outward: the
+/// profile (in |x|) closed along the axis is a polygon; when it runs
+/// counter-clockwise its left normal points into the solid, so flip it.
+fn outward_orientation(curve: &Curve) -> f64 {
+    const SAMPLES: usize = 256;
+    let point = |i: usize| {
+        let p = curve.evaluate(i as f64 / SAMPLES as f64).0;
+        (p.x.abs(), p.y)
     };
-    if qa.abs() <= 1e-12 * (ray.a + q * q) {
-        if qb != 0.0 {
-            found |= accept(-qc / (2.0 * qb), push);
+    let (first, last) = (point(0), point(SAMPLES));
+    let mut polygon: Vec<(f64, f64)> = (0..=SAMPLES).map(point).collect();
+    polygon.push((0.0, last.1));
+    polygon.push((0.0, first.1));
+    let twice_area: f64 = polygon
+        .iter()
+        .zip(polygon.iter().cycle().skip(1))
+        .map(|(a, b)| a.0 * b.1 - b.0 * a.1)
+        .sum();
+    if twice_area > 0.0 { -1.0 } else { 1.0 }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rng::Rng;
+    use crate::scene::model::CurveKind;
+
+    fn vase() -> Revolution {
+        Revolution::new(&Profile {
+            kind: CurveKind::Bezier,
+            controls: vec![
+                [0.0, 0.0],
+                [2.2, 0.0],
+                [3.0, 1.5],
+                [1.2, 3.0],
+                [0.8, 4.0],
+                [1.6, 5.0],
+                [2.0, 5.6],
+            ],
+        })
+        .unwrap()
+    }
+
+    fn sweep(curve: &Curve, u: f64, theta: f64) -> Point3 {
+        let p = curve.evaluate(u).0;
+        Point3::new(p.x * theta.cos(), p.y, -p.x * theta.sin())
+    }
+
+    fn normal_at(surface: &Revolution, origin: Vec3, direction: Vec3) -> Vec3 {
+        let ray = Ray::new(origin, direction, 0.0);
+        let hit = surface.intersect(&ray, 0.0, f64::INFINITY).expect("hits");
+        surface.surface(&ray, &hit).geometric_normal
+    }
+
+    #[test]
+    fn normals_point_out_of_the_solid_whichever_way_the_profile_runs() {
+        let forward = vase();
+        let mut controls = forward
+            .curve()
+            .controls()
+            .iter()
+            .map(|c| [c.x, c.y])
+            .collect::<Vec<_>>();
+        controls.reverse();
+        let backward = Revolution::new(&Profile {
+            kind: CurveKind::Bezier,
+            controls,
+        })
+        .unwrap();
+        for surface in [&forward, &backward] {
+            let side = normal_at(
+                surface,
+                Vec3::new(10.0, 1.5, 0.0),
+                Vec3::new(-1.0, 0.0, 0.0),
+            );
+            assert!(side.x > 0.5, "side normal {side:?}");
+            let bottom = normal_at(surface, Vec3::new(0.5, -5.0, 0.2), Vec3::new(0.0, 1.0, 0.0));
+            assert!(bottom.y < -0.5, "bottom normal {bottom:?}");
         }
-    } else {
-        let discriminant = qb * qb - qa * qc;
-        if discriminant >= 0.0 {
-            let root = -(qb + discriminant.sqrt().copysign(qb));
-            if root != 0.0 {
-                found |= accept(root / qa, push);
-                found |= accept(qc / root, push);
-            } else {
-                found |= accept(0.0, push);
+    }
+
+    #[test]
+    fn hits_lie_on_the_surface_with_the_swept_normal() {
+        let surface = vase();
+        let mut rng = Rng::new(8, 8);
+        let mut hits = 0;
+        for _ in 0..2000 {
+            let origin = Point3::new(
+                rng.next_f64() * 20.0 - 10.0,
+                rng.next_f64() * 20.0 - 7.0,
+                rng.next_f64() * 20.0 - 10.0,
+            );
+            let target = Point3::new(
+                rng.next_f64() * 6.0 - 3.0,
+                rng.next_f64() * 5.6,
+                rng.next_f64() * 6.0 - 3.0,
+            );
+            let ray = Ray::new(origin, target - origin, 0.0);
+            let Some(hit) = surface.intersect(&ray, 0.0, f64::INFINITY) else {
+                continue;
+            };
+            hits += 1;
+            let s = surface.surface(&ray, &hit);
+            assert!((s.point - ray.at(hit.t)).norm() < 1e-7, "{:?}", s.point);
+            let (u, theta) = (s.uv[1], s.uv[0] * 2.0 * PI);
+            assert!((sweep(surface.curve(), u, theta) - s.point).norm() < 1e-9);
+            // Normal = dS/du x dS/dtheta from finite differences.
+            let h = 1e-6;
+            let du = sweep(surface.curve(), u + h, theta) - sweep(surface.curve(), u - h, theta);
+            let dtheta =
+                sweep(surface.curve(), u, theta + h) - sweep(surface.curve(), u, theta - h);
+            let expected = du.cross(&dtheta);
+            if expected.norm() > 1e-9 {
+                let error = (expected.normalize() - s.geometric_normal).norm();
+                assert!(error < 1e-5, "normal off by {error} at u={u}");
+                assert!((du.normalize() - s.tangent).norm() < 1e-5);
             }
         }
+        assert!(hits > 500, "{hits}");
     }
-    if found {
-        return;
-    }
-    // Near miss: the extremum of r^2 - x^2 within the frustum's t range.
-    let (ts0, ts1) = if beta != 0.0 {
-        let (a, b) = ((0.0 - alpha) / beta, (1.0 - alpha) / beta);
-        (a.min(b).max(t0), a.max(b).min(t1))
-    } else if (0.0..=1.0).contains(&alpha) {
-        (t0, t1)
-    } else {
-        return;
-    };
-    if ts0 > ts1 {
-        return;
-    }
-    let t = if qa != 0.0 { -qb / qa } else { ts0 };
-    let t = if t.is_finite() {
-        t.clamp(ts0, ts1)
-    } else {
-        ts0
-    };
-    let x = (p + q * t).abs();
-    if (ray.radius(t) - x).abs() <= segment.deviation {
-        push(t, to_u(alpha + beta * t));
-    }
-}
 
-fn distance_to_segment(p: &Point2, a: &Point2, b: &Point2) -> f64 {
-    let ab = b - a;
-    let length_squared = ab.norm_squared();
-    let s = if length_squared > 0.0 {
-        ((p - a).dot(&ab) / length_squared).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p - (a + ab * s)).norm()
+    #[test]
+    fn ray_along_the_axis_hits_the_bottom_centre() {
+        let surface = vase();
+        let ray = Ray::new(Point3::new(0.0, -5.0, 0.0), Vec3::y(), 0.0);
+        let hit = surface.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+        assert!((hit.t - 5.0).abs() < 1e-6, "{}", hit.t);
+        let s = surface.surface(&ray, &hit);
+        assert!(s.geometric_normal.iter().all(|c| c.is_finite()));
+        assert!(s.geometric_normal.y.abs() > 0.99);
+    }
 }

@@ -5,7 +5,7 @@ pub mod original;
 
 use crate::color::Color;
 use crate::math::Ray;
-use crate::rng::Rng;
+use crate::sampler::Sampler;
 use crate::scene::model::{Light, Scene};
 use crate::world::World;
 
@@ -17,9 +17,9 @@ pub enum Integrator {
 }
 
 impl Integrator {
-    pub fn radiance(&self, view: &SceneView, ray: Ray, rng: &mut Rng) -> Color {
+    pub fn radiance(&self, view: &SceneView, ray: Ray, sampler: &mut Sampler) -> Color {
         match self {
-            Integrator::Original => original::radiance(view, ray, rng),
+            Integrator::Original => original::radiance(view, ray, sampler),
         }
     }
 }

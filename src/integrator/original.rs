@@ -8,7 +8,7 @@
 
 use crate::color::Color;
 use crate::math::Ray;
-use crate::rng::Rng;
+use crate::sampler::Sampler;
 use crate::sampling::{cosine_hemisphere, dielectric, reflect};
 use crate::shading::Shading;
 
@@ -21,7 +21,7 @@ pub const MAX_DEPTH: u32 = 5;
 /// Diffuse rates at or below this are ignored (the original's threshold).
 const MIN_DIFFUSE_RATE: f64 = 1e-4;
 
-pub fn radiance(view: &SceneView, mut ray: Ray, rng: &mut Rng) -> Color {
+pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color {
     let mut result = Color::BLACK;
     let mut throughput = Color::WHITE;
     let mut depth = 0;
@@ -56,9 +56,9 @@ pub fn radiance(view: &SceneView, mut ray: Ray, rng: &mut Rng) -> Color {
         // One lobe, chosen with probability weight / total: the weight and the
         // probability cancel but for `total` (1 for normalised materials).
         throughput *= at.color * total;
-        let pick = rng.next_f64() * total;
+        let pick = sampler.next_f64() * total;
         let direction = if pick < diffuse {
-            cosine_hemisphere(&at.normal, [rng.next_f64(), rng.next_f64()])
+            cosine_hemisphere(&at.normal, sampler.next_2d())
         } else if pick < diffuse + specular {
             reflect(&ray.direction, &at.normal)
         } else {
@@ -68,7 +68,7 @@ pub fn radiance(view: &SceneView, mut ray: Ray, rng: &mut Rng) -> Color {
                 Some(refracted) => {
                     // smallpt's Russian roulette between the two glass lobes.
                     let p = 0.25 + 0.5 * glass.reflectance;
-                    if rng.next_f64() < p {
+                    if sampler.next_f64() < p {
                         throughput *= glass.reflectance / p;
                         glass.reflected
                     } else {

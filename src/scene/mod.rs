@@ -33,7 +33,44 @@ pub fn load_scene(path: &Path, options: &LoadOptions) -> Result<Scene, SceneErro
         file: path.to_path_buf(),
         error,
     })?;
+    let started = std::time::Instant::now();
     let text = String::from_utf8_lossy(&bytes);
     let document = parse(&text, path)?;
-    build(&document, path, options)
+    let parse_seconds = started.elapsed().as_secs_f64();
+    let mut scene = build(&document, path, options)?;
+    scene.load.parse_seconds = parse_seconds;
+    Ok(scene)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn non_utf8_files_and_missing_files_are_errors_not_panics() {
+        let dir = std::env::temp_dir().join(format!("pt-load-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let file = dir.join("bad.txt");
+        std::fs::write(&file, b"PerspectiveCamera { width 2 height 2 \xff\xfe }").expect("write");
+        let scene = load_scene(&file, &LoadOptions::default()).expect("lossy decoding");
+        assert_eq!(scene.warnings.len(), 1);
+        let missing = load_scene(&dir.join("none.txt"), &LoadOptions::default());
+        assert!(matches!(missing, Err(SceneError::Io { .. })));
+    }
+
+    #[test]
+    fn deeply_nested_groups_build() {
+        let depth = parse::MAX_DEPTH - 2;
+        let text = format!(
+            "PerspectiveCamera {{ width 2 height 2 }}\nGroup {{ {} Sphere {{ center 0 0 0 radius 1 }} {} }}",
+            "Transform { Translate 1 0 0 Group { ".repeat(depth / 2),
+            "} }".repeat(depth / 2)
+        );
+        let document = parse(&text, Path::new("deep.txt")).expect("parses");
+        let scene =
+            build(&document, Path::new("deep.txt"), &LoadOptions::default()).expect("builds");
+        let mut leaves = 0;
+        scene.root.for_each_leaf(&mut |_| leaves += 1);
+        assert_eq!(leaves, 1);
+    }
 }

@@ -27,6 +27,20 @@ pub struct Scene {
     pub warnings: Vec<Diagnostic>,
     /// Features that the file uses but the renderer does not implement yet.
     pub unsupported: Vec<String>,
+    /// What reading the file cost (for `--stats`).
+    pub load: LoadStats,
+}
+
+/// Time spent in each phase of loading a scene, and what was loaded.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct LoadStats {
+    pub parse_seconds: f64,
+    pub mesh_seconds: f64,
+    pub texture_seconds: f64,
+    /// Distinct OBJ files read.
+    pub meshes_loaded: usize,
+    /// Distinct images decoded.
+    pub textures_loaded: usize,
 }
 
 /// Which family of the PA grammar a file was written in (see docs/scene-format.md).

@@ -54,3 +54,22 @@ pub fn summary(scene: &Scene) -> String {
     }
     text
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::scene::build::build_text;
+
+    #[test]
+    fn mentions_dialect_camera_and_counts() {
+        let scene = build_text(
+            "PerspectiveCamera { width 4 height 3 angle 30 }\nMaterials { Material { specularRate 1 } }\n\
+             Group { Sphere { center 0 0 0 radius 1 } Triangle { vertex0 0 0 0 vertex1 1 0 0 vertex2 0 1 0 } }",
+        )
+        .expect("builds");
+        let text = super::summary(&scene);
+        assert!(text.contains("canonical"), "{text}");
+        assert!(text.contains("4x3 pixels"), "{text}");
+        assert!(text.contains("30 degrees vertical"), "{text}");
+        assert!(text.contains("2 objects (1 triangles)"), "{text}");
+    }
+}

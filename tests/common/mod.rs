@@ -3,6 +3,10 @@
 
 #![allow(dead_code)]
 
+mod shapes;
+#[allow(unused_imports)]
+pub use shapes::*;
+
 use std::path::{Path, PathBuf};
 
 use pathtracer::color::Color;
@@ -93,6 +97,7 @@ pub fn scene_with(materials: Vec<Material>, root: Object) -> Scene {
         dialect: Dialect::Canonical,
         warnings: Vec::new(),
         unsupported: Vec::new(),
+        load: Default::default(),
     }
 }
 

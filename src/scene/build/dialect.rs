@@ -45,6 +45,16 @@ const CANONICAL: [&str; 6] = [
     "focusDistance",
 ];
 
+/// cyf words besides its documented fingerprint (files without a Textures block).
+const CYF: [&str; 6] = [
+    "Textures",
+    "Lambert",
+    "Emissive",
+    "Metal",
+    "Dielectric",
+    "aperture",
+];
+
 /// Detects the dialect of a parsed file.
 pub fn detect_dialect(document: &Document) -> Dialect {
     let mut words: HashSet<&str> = HashSet::new();
@@ -65,7 +75,7 @@ pub fn detect_dialect(document: &Document) -> Dialect {
             .iter()
             .flat_map(|(names, _)| names.iter())
             .chain(CANONICAL.iter())
-            .chain(["Textures", "Lambert", "Emissive"].iter())
+            .chain(CYF.iter())
             .find(|name| **name == word)
         {
             words.insert(known);
@@ -80,6 +90,16 @@ pub fn detect_dialect(document: &Document) -> Dialect {
         if names.iter().any(|n| has(n)) {
             return *dialect;
         }
+    }
+    // cyf files without textures: its material kinds, or `aperture` with `focusDistance`
+    // (the canonical dialect has `interfereRatio` instead).
+    let canonical_only = CANONICAL.iter().take(5).any(|n| has(n));
+    if ["Lambert", "Emissive", "Metal", "Dielectric"]
+        .iter()
+        .any(|n| has(n))
+        || (has("aperture") && has("focusDistance") && !canonical_only)
+    {
+        return Dialect::Cyf;
     }
     if CANONICAL.iter().any(|n| has(n)) {
         return Dialect::Canonical;
@@ -123,5 +143,10 @@ mod tests {
         );
         assert_eq!(detect("M { attenuation 1 1 1 } Global { }"), Dialect::Rtiow);
         assert_eq!(detect("M { emissionColor 1 1 1 }"), Dialect::Yao);
+        assert_eq!(detect("C { aperture 1 focusDistance 2 }"), Dialect::Cyf);
+        assert_eq!(
+            detect("C { interfereRatio 1 focusDistance 2 }"),
+            Dialect::Canonical
+        );
     }
 }

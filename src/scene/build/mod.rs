@@ -10,6 +10,8 @@ mod objects;
 mod paths;
 mod shapes;
 mod textures;
+mod transform;
+mod weights;
 
 use std::path::Path;
 
@@ -162,7 +164,15 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         1 => roots.pop().unwrap_or(Object::Group(Vec::new())),
         _ => Object::Group(roots),
     };
+    let texture_start = std::time::Instant::now();
     let (materials, textures) = textures::load_textures(&mut context, specs, &root)?;
+    let load = crate::scene::model::LoadStats {
+        mesh_seconds: objects.mesh_seconds,
+        meshes_loaded: objects.meshes_loaded(),
+        texture_seconds: texture_start.elapsed().as_secs_f64(),
+        textures_loaded: textures.len(),
+        ..Default::default()
+    };
     Ok(Scene {
         camera,
         background,
@@ -173,6 +183,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         dialect,
         warnings: context.warnings,
         unsupported: context.unsupported,
+        load,
     })
 }
 
@@ -196,4 +207,12 @@ fn build_background(context: &mut Context, block: &Block) -> Result<Color, Scene
         }
     }
     Ok(color)
+}
+
+/// Parses and builds scene text (a file `t.txt` in the working directory), for tests.
+#[cfg(test)]
+pub(crate) fn build_text(text: &str) -> Result<Scene, String> {
+    let file = Path::new("t.txt");
+    let document = crate::scene::parse::parse(text, file).map_err(|e| e.to_string())?;
+    build(&document, file, &LoadOptions::default()).map_err(|e| e.to_string())
 }

@@ -4,12 +4,13 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use nalgebra::{Rotation3, Unit};
+use nalgebra::Rotation3;
 
 use crate::math::{Matrix, Vec3};
 use crate::scene::ast::{Block, ItemKind};
 use crate::scene::build::shapes::{Fields, build_shape};
-use crate::scene::build::{Context, Cursor, obj, paths};
+use crate::scene::build::transform::wrap;
+use crate::scene::build::{Context, Cursor, obj, paths, transform};
 use crate::scene::error::{Location, SceneError};
 use crate::scene::model::{CurveKind, MeshData, Object, Profile};
 
@@ -18,14 +19,22 @@ pub struct ObjectBuilder {
     material_count: usize,
     current: usize,
     meshes: HashMap<PathBuf, Arc<MeshData>>,
+    /// Time spent reading OBJ files.
+    pub mesh_seconds: f64,
 }
 
 impl ObjectBuilder {
+    /// Distinct OBJ files read so far.
+    pub fn meshes_loaded(&self) -> usize {
+        self.meshes.len()
+    }
+
     pub fn new(material_count: usize) -> Self {
         ObjectBuilder {
             material_count,
             current: 0,
             meshes: HashMap::new(),
+            mesh_seconds: 0.0,
         }
     }
 
@@ -72,7 +81,7 @@ impl ObjectBuilder {
         Ok(Object::Group(children))
     }
 
-    fn select_material(
+    pub fn select_material(
         &mut self,
         context: &mut Context,
         cursor: &mut Cursor,
@@ -105,7 +114,7 @@ impl ObjectBuilder {
         }
         match block.name.as_str() {
             "Group" => self.group(context, block, location).map(Some),
-            "Transform" => self.transform(context, block, location).map(Some),
+            "Transform" => transform::build_transform(self, context, block, location).map(Some),
             "TriangleMesh" | "Mesh" => self.mesh(context, block, location).map(Some),
             "RevSurface" => self.revolution(context, block, location).map(Some),
             "BezierCurve" | "BsplineCurve" => {
@@ -121,76 +130,6 @@ impl ObjectBuilder {
                 Ok(None)
             }
         }
-    }
-
-    /// `Transform { op* object }`: `M = M * Op` in reading order (Matrix4f: `Op * M`).
-    fn transform(
-        &mut self,
-        context: &mut Context,
-        block: &Block,
-        location: Location,
-    ) -> Result<Object, SceneError> {
-        let mut matrix = Matrix::identity();
-        let mut children = Vec::new();
-        let mut cursor = Cursor::of(block);
-        while let Some(item) = cursor.next() {
-            match &item.kind {
-                ItemKind::Word(op) => match op.as_str() {
-                    "Translate" => {
-                        matrix *= Matrix::new_translation(&cursor.vec3(context, op)?);
-                    }
-                    "Scale" => {
-                        matrix *= Matrix::new_nonuniform_scaling(&cursor.vec3(context, op)?);
-                    }
-                    "UniformScale" => matrix *= Matrix::new_scaling(cursor.number(context, op)?),
-                    "XRotate" | "YRotate" | "ZRotate" => {
-                        let axis = match op.as_str() {
-                            "XRotate" => Vec3::x(),
-                            "YRotate" => Vec3::y(),
-                            _ => Vec3::z(),
-                        };
-                        let degrees = cursor.number(context, op)?;
-                        matrix *= rotation(axis, degrees);
-                    }
-                    "MaterialIndex" | "materialIndex" => {
-                        self.select_material(context, &mut cursor, op)?
-                    }
-                    "-" => {}
-                    _ => context.skip_field(&mut cursor, op, item.location, "Transform")?,
-                },
-                ItemKind::Block(inner) if inner.name == "Rotate" => {
-                    let mut c = Cursor::of(inner);
-                    let axis = c.vec3(context, "Rotate")?;
-                    let degrees = c.number(context, "Rotate")?;
-                    if axis.norm() < 1e-300 {
-                        return Err(context.error(item.location, "rotation axis is zero".into()));
-                    }
-                    matrix *= rotation(axis, degrees);
-                }
-                ItemKind::Block(inner) if inner.name == "Matrix4f" || inner.name == "Matrix4d" => {
-                    let mut c = Cursor::of(inner);
-                    let mut values = [0.0; 16];
-                    for value in &mut values {
-                        *value = c.number(context, &inner.name)?;
-                    }
-                    matrix = Matrix::from_column_slice(&values) * matrix;
-                }
-                ItemKind::Block(inner) => {
-                    if let Some(child) = self.object(context, inner, item.location)? {
-                        children.push(child);
-                    }
-                }
-                _ => context.skip_item(item, "Transform")?,
-            }
-        }
-        let child = match children.len() {
-            1 => children.pop().unwrap_or(Object::Group(Vec::new())),
-            n => {
-                context.warn(location, format!("Transform holds {n} objects, expected 1"))?;
-                Object::Group(children)
-            }
-        };
-        wrap(context, matrix, child, location)
     }
 
     /// `TriangleMesh { [smooth] obj_file path }`.
@@ -230,7 +169,9 @@ impl ObjectBuilder {
         let mesh = match self.meshes.get(&path) {
             Some(mesh) => mesh.clone(),
             None => {
+                let started = std::time::Instant::now();
                 let (mesh, warnings) = obj::load_obj(&path).map_err(|e| context.error(at, e))?;
+                self.mesh_seconds += started.elapsed().as_secs_f64();
                 for warning in warnings {
                     context.warn(at, warning)?;
                 }
@@ -298,30 +239,6 @@ impl ObjectBuilder {
     }
 }
 
-fn rotation(axis: Vec3, degrees: f64) -> Matrix {
-    Rotation3::from_axis_angle(&Unit::new_normalize(axis), degrees.to_radians()).to_homogeneous()
-}
-
-/// A transform node with its inverse; a singular matrix is an error.
-fn wrap(
-    context: &Context,
-    matrix: Matrix,
-    child: Object,
-    location: Location,
-) -> Result<Object, SceneError> {
-    let inverse = matrix
-        .try_inverse()
-        .filter(|inverse| inverse.iter().chain(matrix.iter()).all(|v| v.is_finite()));
-    let Some(inverse) = inverse else {
-        return Err(context.error(location, "the transform matrix is singular".into()));
-    };
-    Ok(Object::Transform {
-        matrix,
-        inverse,
-        child: Box::new(child),
-    })
-}
-
 fn read_profile(
     context: &mut Context,
     curve: &Block,
@@ -361,4 +278,95 @@ fn read_profile(
         ));
     }
     Ok(Profile { kind, controls })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::scene::build::build_text;
+    use crate::scene::model::Object;
+
+    const HEAD: &str =
+        "PerspectiveCamera { width 2 height 2 }\nMaterials { Material { } Material { } }\n";
+
+    fn leaves(text: &str) -> Result<Vec<Object>, String> {
+        let scene = build_text(&format!("{HEAD}{text}"))?;
+        let mut out = Vec::new();
+        scene.root.for_each_leaf(&mut |leaf| out.push(leaf.clone()));
+        Ok(out)
+    }
+
+    fn material(object: &Object) -> usize {
+        match object {
+            Object::Sphere { material, .. } | Object::Plane { material, .. } => *material,
+            _ => usize::MAX,
+        }
+    }
+
+    #[test]
+    fn material_index_is_global_state() {
+        let objects = leaves(
+            "Group { numObjects 3 Sphere { center 0 0 0 radius 1 }\n Group { MaterialIndex 1 - } \
+             Plane { normal 0 1 0 offset 0 } }",
+        )
+        .expect("builds");
+        assert_eq!(objects.iter().map(material).collect::<Vec<_>>(), [0, 1]);
+    }
+
+    #[test]
+    fn bad_material_index_has_a_location() {
+        let e = leaves("Group {\n  MaterialIndex 2\n}").expect_err("out of range");
+        assert!(
+            e.contains("t.txt:4:17") && e.contains("out of range"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn missing_number_and_missing_mesh() {
+        let e = leaves("Group { Sphere { center 0 0 radius 1 } }").expect_err("short vector");
+        assert!(e.contains("t.txt:3:"), "{e}");
+        let e = leaves("Group { TriangleMesh { obj_file mesh/none.obj } }").expect_err("no mesh");
+        assert!(
+            e.contains("mesh/none.obj") && e.contains("t.txt:3:33"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn shapes_of_every_dialect() {
+        let objects = leaves(
+            "Group { Rectangle { point 0 0 0 x 1 0 0 y 0 1 0 }\n\
+             Rectangle { x0 0 y0 0 x1 2 y1 3 n 0 d 4 }\n\
+             Rectangle { center 0 0 0 dirLen 1 0 0 dirWid 0 0 1 len 2 wid 4 }\n\
+             XZRectangle { points 0 0 1 1 offset 5 normal -1 }\n\
+             MovingSphere { center0 0 0 0 center1 1 0 0 time0 0 time1 1 radius 1 }\n\
+             Disk { center 0 0 0 normal 0 1 0 radius 2 }\n\
+             RevSurface { profile BsplineCurve { controls [0 0 0] [1 1 0] [1 2 0] [0 3 0] } position 1 0 0 }\n\
+             Wobble { a 1 } BezierCurve { controls [ 0 0 0 ] [ 1 1 0 ] } }",
+        )
+        .expect("builds");
+        assert_eq!(objects.len(), 7);
+        let Object::Rectangle { origin, edge_u, .. } = &objects[2] else {
+            panic!()
+        };
+        assert_eq!((origin.x, origin.z, edge_u.x), (-1.0, -2.0, 2.0));
+        let Object::Rectangle { edge_u, edge_v, .. } = &objects[3] else {
+            panic!()
+        };
+        assert!(edge_u.cross(edge_v).y < 0.0);
+        let Object::Sphere { motion, .. } = &objects[4] else {
+            panic!()
+        };
+        assert_eq!(motion.x, 1.0);
+        assert!(matches!(objects[6], Object::Revolution { .. }));
+    }
+
+    #[test]
+    fn zero_materials_get_a_default() {
+        let scene = build_text(
+            "PerspectiveCamera { width 2 height 2 }\nGroup { Sphere { center 0 0 0 radius 1 } }",
+        )
+        .expect("builds");
+        assert_eq!(scene.materials.len(), 1);
+    }
 }

@@ -1,0 +1,180 @@
+//! Sample generators for pixel samples: independent random numbers, or an
+//! Owen-scrambled Sobol' sequence (Burley 2020, "Practical Hash-based Owen
+//! Scrambling", JCGT 9(4)).
+//!
+//! A [`Sampler`] is created for one pixel sample from (pixel index, sample
+//! index, seed) and hands out one value per dimension, in order. The Sobol'
+//! sampler groups dimensions by four: group `g` holds dimensions `4g..4g+3`,
+//! which are the four Sobol' dimensions of [`sobol`], each Owen-scrambled with
+//! its own seed, at a sample index shuffled by a nested uniform scramble seeded
+//! per (pixel, group). Shuffling decorrelates the groups from each other while
+//! keeping every power-of-two prefix of a pixel's samples stratified.
+
+pub mod owen;
+pub mod sobol;
+
+#[cfg(test)]
+mod tests;
+
+use crate::rng::{Rng, mix64};
+use owen::nested_uniform_scramble;
+
+/// Which sample generator a render uses.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SamplerKind {
+    /// Independent uniform random numbers ([`Rng::for_sample`]).
+    #[default]
+    Independent,
+    /// Shuffled, Owen-scrambled Sobol' points ([`SobolStream`]).
+    Sobol,
+}
+
+impl SamplerKind {
+    pub const ALL: [SamplerKind; 2] = [SamplerKind::Independent, SamplerKind::Sobol];
+
+    /// The command-line name.
+    pub fn name(self) -> &'static str {
+        match self {
+            SamplerKind::Independent => "independent",
+            SamplerKind::Sobol => "sobol",
+        }
+    }
+
+    /// Parses a command-line name, as returned by [`SamplerKind::name`].
+    pub fn from_name(name: &str) -> Option<SamplerKind> {
+        SamplerKind::ALL
+            .into_iter()
+            .find(|kind| kind.name() == name)
+    }
+}
+
+/// The sample values of one pixel sample, one dimension after another.
+#[derive(Clone, Debug)]
+pub enum Sampler {
+    Independent(Rng),
+    Sobol(SobolStream),
+}
+
+impl Sampler {
+    pub fn new(kind: SamplerKind, pixel_index: u64, sample_index: u64, seed: u64) -> Sampler {
+        match kind {
+            SamplerKind::Independent => {
+                Sampler::Independent(Rng::for_sample(pixel_index, sample_index, seed))
+            }
+            SamplerKind::Sobol => Sampler::Sobol(SobolStream::new(pixel_index, sample_index, seed)),
+        }
+    }
+
+    /// The value of the next dimension, in `[0, 1)`.
+    pub fn next_f64(&mut self) -> f64 {
+        match self {
+            Sampler::Independent(rng) => rng.next_f64(),
+            Sampler::Sobol(stream) => stream.next_f64(),
+        }
+    }
+
+    /// The values of the next two dimensions. The Sobol' sampler first skips
+    /// to an even dimension, so that the pair is one of the stratified pairs
+    /// (0, 1), (2, 3), (4, 5), ...
+    pub fn next_2d(&mut self) -> [f64; 2] {
+        match self {
+            Sampler::Independent(rng) => [rng.next_f64(), rng.next_f64()],
+            Sampler::Sobol(stream) => stream.next_2d(),
+        }
+    }
+}
+
+/// Salt that keeps the Sobol' seeds apart from those of [`Rng::for_sample`].
+const SOBOL_DOMAIN: u64 = 0x50B0_1D0E_5EED_0001;
+
+/// Per-pixel seed of the Sobol' sampler.
+fn pixel_seed(pixel_index: u64, seed: u64) -> u64 {
+    mix64(seed ^ mix64(pixel_index ^ SOBOL_DOMAIN))
+}
+
+/// Seed of one group of four dimensions. Sample indices at or beyond 2^32 fold
+/// their high half into it, so each block of 2^32 samples is scrambled anew.
+fn group_seed(pixel_seed: u64, group: u32, sample_index: u64) -> u64 {
+    let index_block = sample_index >> 32;
+    mix64(pixel_seed ^ mix64((index_block << 32) | group as u64))
+}
+
+/// The shuffled Sobol' index and scrambled value of one dimension in a group.
+fn group_value(group_seed: u64, shuffled_index: u32, dimension_in_group: usize) -> f64 {
+    let dimension_seed = mix64(group_seed.wrapping_add(1 + dimension_in_group as u64));
+    let point = sobol::sobol(shuffled_index, dimension_in_group);
+    let scrambled = nested_uniform_scramble(point, dimension_seed as u32);
+    // Owen scrambling randomises every digit; the 21 digits below the 32
+    // generated ones are drawn from a hash of the scrambled prefix.
+    let low = mix64(dimension_seed ^ scrambled as u64) >> 43;
+    let bits = ((scrambled as u64) << 21) | low;
+    bits as f64 * (1.0 / (1u64 << 53) as f64)
+}
+
+fn shuffle_index(group_seed: u64, sample_index: u64) -> u32 {
+    nested_uniform_scramble(sample_index as u32, group_seed as u32)
+}
+
+/// Dimension `dimension` of sample `sample_index` of pixel `pixel_index`: the
+/// shuffled Owen-scrambled Sobol' value in `[0, 1)`, addressed directly.
+///
+/// Sample indices below 2^32 index one scrambled Sobol' sequence; beyond, the
+/// index wraps modulo 2^32 and each block of 2^32 samples gets fresh scrambles.
+pub fn sobol_sample(pixel_index: u64, sample_index: u64, dimension: u32, seed: u64) -> f64 {
+    let group = dimension / sobol::DIMENSIONS as u32;
+    let group_seed = group_seed(pixel_seed(pixel_index, seed), group, sample_index);
+    let shuffled_index = shuffle_index(group_seed, sample_index);
+    group_value(
+        group_seed,
+        shuffled_index,
+        dimension as usize % sobol::DIMENSIONS,
+    )
+}
+
+/// The Sobol' values of one pixel sample, in dimension order; equal to
+/// [`sobol_sample`] for dimensions 0, 1, 2, ... but hashing each group once.
+#[derive(Clone, Debug)]
+pub struct SobolStream {
+    pixel_seed: u64,
+    sample_index: u64,
+    dimension: u32,
+    group_seed: u64,
+    shuffled_index: u32,
+}
+
+impl SobolStream {
+    pub fn new(pixel_index: u64, sample_index: u64, seed: u64) -> SobolStream {
+        SobolStream {
+            pixel_seed: pixel_seed(pixel_index, seed),
+            sample_index,
+            dimension: 0,
+            group_seed: 0,
+            shuffled_index: 0,
+        }
+    }
+
+    /// The next dimension consumed by [`SobolStream::next_f64`].
+    pub fn dimension(&self) -> u32 {
+        self.dimension
+    }
+
+    /// The value of the next dimension, in `[0, 1)`.
+    pub fn next_f64(&mut self) -> f64 {
+        let dimension_in_group = self.dimension as usize % sobol::DIMENSIONS;
+        if dimension_in_group == 0 {
+            let group = self.dimension / sobol::DIMENSIONS as u32;
+            self.group_seed = group_seed(self.pixel_seed, group, self.sample_index);
+            self.shuffled_index = shuffle_index(self.group_seed, self.sample_index);
+        }
+        self.dimension = self.dimension.wrapping_add(1);
+        group_value(self.group_seed, self.shuffled_index, dimension_in_group)
+    }
+
+    /// The next two dimensions, starting from an even one.
+    pub fn next_2d(&mut self) -> [f64; 2] {
+        if self.dimension % 2 == 1 {
+            self.next_f64();
+        }
+        [self.next_f64(), self.next_f64()]
+    }
+}

@@ -1,0 +1,72 @@
+//! Every scene of the shared corpus renders without a single NaN or infinite
+//! sample: the 15 Cambrian files and the 3 report scenes at 64x48 and 16 spp
+//! (the faithful renderer's acceptance size), the 128 complete coursework
+//! scenes at 32x24 and 4 spp.
+
+mod common;
+
+use pathtracer::integrator::Integrator;
+use pathtracer::render::{RenderSettings, render};
+use pathtracer::sampler::SamplerKind;
+use pathtracer::scene::{LoadOptions, load_scene};
+use pathtracer::world::World;
+
+#[test]
+fn every_shared_scene_renders_without_nan_or_inf_samples() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    let mut failures = Vec::new();
+    let mut rendered = 0;
+    for (file, base) in common::corpus(&shared) {
+        let options = LoadOptions {
+            base: Some(base),
+            ..LoadOptions::default()
+        };
+        let scene = match load_scene(&file, &options) {
+            Ok(scene) => scene,
+            Err(error) => {
+                failures.push(format!("{}: does not load: {error}", file.display()));
+                continue;
+            }
+        };
+        let acceptance = !file.to_string_lossy().contains("coursework");
+        let (width, height, spp) = if acceptance {
+            (64, 48, 16)
+        } else {
+            (32, 24, 4)
+        };
+        let settings = RenderSettings {
+            width,
+            height,
+            spp,
+            seed: 1,
+            threads: None,
+            integrator: Integrator::Original,
+            sampler: SamplerKind::Sobol,
+            progress: false,
+        };
+        let world = World::build(&scene);
+        let (image, stats) = match render(&scene, &world, &settings) {
+            Ok(result) => result,
+            Err(error) => {
+                failures.push(format!("{}: {error}", file.display()));
+                continue;
+            }
+        };
+        rendered += 1;
+        if stats.dropped > 0 {
+            failures.push(format!(
+                "{}: {} NaN/Inf samples",
+                file.display(),
+                stats.dropped
+            ));
+        }
+        if image.pixels.iter().any(|p| !p.is_finite()) {
+            failures.push(format!("{}: non-finite pixel", file.display()));
+        }
+    }
+    println!("rendered {rendered} scenes");
+    assert!(rendered >= 146, "only {rendered} scenes rendered");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
