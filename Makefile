@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench clean
+.PHONY: build render test lint bench converge crosscheck clean
 
 build:
 	$(CARGO) build --release
@@ -23,6 +23,19 @@ lint:
 
 bench:
 	$(CARGO) bench --bench throughput
+
+# Error against time for one scene: make converge SCENE=... [SPP=256]
+converge: build
+	$(BIN) converge $(SCENE) --max-spp $(SPP)
+
+# Cross-check against Mitsuba 3 (installs mitsuba from PyPI into a local venv;
+# not part of `make test`). VARIANT=llvm_ad_rgb needs Debian's libllvm19.
+VENV := .venv-crosscheck
+VARIANT ?= scalar_rgb
+crosscheck: build
+	python3 -m venv $(VENV)
+	$(VENV)/bin/pip install -q mitsuba numpy
+	$(VENV)/bin/python scripts/crosscheck.py --variant $(VARIANT)
 
 clean:
 	$(CARGO) clean
