@@ -104,7 +104,11 @@ fn group_seed(pixel_seed: u64, group: u32, sample_index: u64) -> u64 {
 fn group_values(group_seed: u64, shuffled_index: u32) -> [u64; sobol::DIMENSIONS] {
     let points = sobol::sobol_all(shuffled_index);
     std::array::from_fn(|dimension| {
-        let dimension_seed = mix64(group_seed.wrapping_add(1 + dimension as u64));
+        // A cheap per-dimension variant of the (already well mixed) group seed.
+        let dimension_seed = (group_seed
+            ^ (dimension as u64 + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15))
+        .wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        let dimension_seed = dimension_seed ^ (dimension_seed >> 31);
         let scrambled = nested_uniform_scramble(points[dimension], dimension_seed as u32);
         // Owen scrambling randomises every digit; the 21 digits below the 32
         // generated ones are drawn from a hash of the scrambled prefix.

@@ -74,16 +74,46 @@ pub fn sobol(index: u32, dimension: usize) -> u32 {
     value
 }
 
-/// The points of all four dimensions for one index, in one pass over its bits.
-pub fn sobol_all(index: u32) -> [u32; DIMENSIONS] {
-    let mut bits = index;
-    let mut value = [0u32; DIMENSIONS];
-    while bits != 0 {
-        let k = bits.trailing_zeros() as usize;
-        for (v, directions) in value.iter_mut().zip(DIRECTIONS.iter()) {
-            *v ^= directions[k];
+/// `BYTE_TABLES[b][x]`: the XOR of the direction numbers selected by the bits
+/// of byte value `x` at byte position `b` of the index, for the four
+/// dimensions packed as `[u32; 4]` (16 KiB): four lookups make a point.
+static BYTE_TABLES: [[[u32; DIMENSIONS]; 256]; 4] = byte_tables();
+
+const fn byte_tables() -> [[[u32; DIMENSIONS]; 256]; 4] {
+    let mut tables = [[[0u32; DIMENSIONS]; 256]; 4];
+    let mut byte = 0;
+    while byte < 4 {
+        let mut x = 0;
+        while x < 256 {
+            let mut dimension = 0;
+            while dimension < DIMENSIONS {
+                let mut value = 0;
+                let mut bit = 0;
+                while bit < 8 {
+                    if (x >> bit) & 1 == 1 {
+                        value ^= DIRECTIONS[dimension][byte * 8 + bit];
+                    }
+                    bit += 1;
+                }
+                tables[byte][x][dimension] = value;
+                dimension += 1;
+            }
+            x += 1;
         }
-        bits &= bits - 1;
+        byte += 1;
+    }
+    tables
+}
+
+/// The points of all four dimensions for one index (four table lookups).
+#[inline]
+pub fn sobol_all(index: u32) -> [u32; DIMENSIONS] {
+    let mut value = [0u32; DIMENSIONS];
+    for (byte, table) in BYTE_TABLES.iter().enumerate() {
+        let entry = &table[((index >> (8 * byte)) & 0xff) as usize];
+        for d in 0..DIMENSIONS {
+            value[d] ^= entry[d];
+        }
     }
     value
 }
