@@ -26,6 +26,8 @@ enum Command {
     Render(commands::render::RenderArgs),
     /// Compare an image with a reference: RMSE, relative MSE, PSNR, SSIM.
     Compare(commands::compare::CompareArgs),
+    /// Convert an image to another format (8-bit output clamped, optional gamma).
+    Convert(commands::compare::ConvertArgs),
     /// Render at doubling sample counts and record error against time.
     Converge(commands::converge::ConvergeArgs),
     /// Draw error-against-time CSV files as one log-log SVG plot.
@@ -37,6 +39,7 @@ fn main() -> ExitCode {
         Command::Check(args) => commands::check::run(&args),
         Command::Render(args) => commands::render::run(&args),
         Command::Compare(args) => commands::compare::run(&args),
+        Command::Convert(args) => commands::compare::convert(&args),
         Command::Converge(args) => commands::converge::run(&args),
         Command::Plot(args) => commands::converge::plot(&args),
     };

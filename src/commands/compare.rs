@@ -1,10 +1,11 @@
-//! `pathtracer compare`: image error metrics against a reference.
+//! `pathtracer compare` (image error metrics against a reference) and
+//! `pathtracer convert` (an image to another format, e.g. PFM to BMP).
 
 use std::path::PathBuf;
 
 use clap::Args;
 
-use pathtracer::image_io::read_image;
+use pathtracer::image_io::{read_image, write_image};
 use pathtracer::metrics::compare;
 
 #[derive(Args)]
@@ -28,4 +29,19 @@ pub fn run(args: &CompareArgs) -> Result<(), String> {
         println!("{comparison}");
     }
     Ok(())
+}
+
+#[derive(Args)]
+pub struct ConvertArgs {
+    /// The image to read (BMP, PNG or PFM).
+    input: PathBuf,
+    /// The image to write (.bmp, .png or .pfm).
+    output: PathBuf,
+    /// Gamma for 8-bit output, as `render --gamma`.
+    #[arg(long)]
+    gamma: Option<f64>,
+}
+
+pub fn convert(args: &ConvertArgs) -> Result<(), String> {
+    write_image(&args.output, &read_image(&args.input)?, args.gamma)
 }
