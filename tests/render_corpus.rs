@@ -43,6 +43,7 @@ fn every_shared_scene_renders_without_nan_or_inf_samples() {
             seed: 1,
             threads: None,
             integrator: Integrator::Original,
+            max_depth: pathtracer::integrator::original::MAX_DEPTH,
             sampler: SamplerKind::Sobol,
             progress: false,
         };
