@@ -260,7 +260,7 @@ fn area_to_solid_angle(reference: &Point3, point: &Point3, normal: &Vec3, area: 
 }
 
 /// A uniform unit vector.
-fn uniform_sphere(u: [f64; 2]) -> Vec3 {
+pub(super) fn uniform_sphere(u: [f64; 2]) -> Vec3 {
     let z = 1.0 - 2.0 * u[0];
     let r = (1.0 - z * z).max(0.0).sqrt();
     let phi = 2.0 * PI * u[1];

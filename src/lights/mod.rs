@@ -14,6 +14,9 @@
 pub mod distribution;
 pub mod emitter;
 
+#[cfg(test)]
+mod tests;
+
 use crate::color::Color;
 use crate::geometry::{Shape, Transform};
 use crate::math::{Point3, Vec3, orthonormal_basis, transform_point, transform_vector};
