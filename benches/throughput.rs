@@ -186,6 +186,7 @@ fn renders(c: &mut Criterion) {
             seed: 0,
             threads: None,
             integrator: Integrator::Original,
+            max_depth: pathtracer::integrator::original::MAX_DEPTH,
             sampler: SamplerKind::Sobol,
             progress: false,
             clamp: None,

@@ -16,6 +16,7 @@ pub mod film;
 pub mod geometry;
 pub mod image_io;
 pub mod integrator;
+pub mod lights;
 pub mod math;
 pub mod metrics;
 pub mod plot;

@@ -26,6 +26,8 @@ pub struct RenderSettings {
     /// Worker threads; `None`: one per core.
     pub threads: Option<usize>,
     pub integrator: Integrator,
+    /// Scattering vertices before a path ends (the original: 5).
+    pub max_depth: u32,
     /// Where sample values come from (independent random or Sobol').
     pub sampler: SamplerKind,
     /// Print a progress line with an ETA (only on a terminal).
@@ -80,7 +82,8 @@ pub fn render_into(
     let width = film.width;
     let height = film.height;
     let camera = Camera::new(&scene.camera, width as u32, height as u32);
-    let view = SceneView::new(scene, world);
+    let mut view = SceneView::new(scene, world);
+    view.max_depth = settings.max_depth;
     let plan = SamplingPlan::for_scene(scene);
     let before = (film.samples(), film.dropped(), film.fireflies());
     let rows_done = AtomicUsize::new(0);

@@ -67,6 +67,7 @@ fn settings(spp: u32, threads: usize) -> RenderSettings {
         seed: 3,
         threads: Some(threads),
         integrator: Integrator::Original,
+        max_depth: 5,
         sampler: SamplerKind::Sobol,
         progress: false,
         clamp: None,

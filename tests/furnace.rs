@@ -11,7 +11,7 @@ use pathtracer::sampler::Sampler;
 use pathtracer::scene::model::{Material, Object};
 use pathtracer::world::World;
 
-fn furnace_mean(material: Material, paths: u64) -> (Color, f64) {
+fn furnace_mean(integrator: Integrator, material: Material, paths: u64) -> (Color, f64) {
     let root = Object::Group(vec![Object::Sphere {
         center: Vec3::new(0.0, 0.0, 0.0),
         radius: 10.0,
@@ -32,7 +32,7 @@ fn furnace_mean(material: Material, paths: u64) -> (Color, f64) {
         );
         let ray = Ray::new(Vec3::new(1.0, 2.0, -3.0), d.normalize(), 0.0);
         let mut sampler = Sampler::Independent(rng);
-        let l = Integrator::Original.radiance(&view, ray, &mut sampler);
+        let l = integrator.radiance(&view, ray, &mut sampler);
         sum += l;
         sum_sq += l.r * l.r;
     }
@@ -55,7 +55,7 @@ fn diffuse_furnace_returns_the_geometric_series_of_its_albedo() {
         emission: Color::gray(1.0),
         ..Material::default()
     };
-    let (mean, _) = furnace_mean(material, 2_000);
+    let (mean, _) = furnace_mean(Integrator::Original, material, 2_000);
     // Every path has the same value: no variance at all.
     let want = expected(1.0, 0.8);
     assert!((mean.r - want).abs() < 1e-9, "{} vs {want}", mean.r);
@@ -73,7 +73,31 @@ fn mixed_rates_furnace_is_unbiased() {
         specular: 0.7,
         ..Material::default()
     };
-    let (mean, _) = furnace_mean(material, 2_000);
+    let (mean, _) = furnace_mean(Integrator::Original, material, 2_000);
     let want = expected(2.0, 0.6);
     assert!((mean.r - want).abs() < 1e-9, "{} vs {want}", mean.r);
+}
+
+#[test]
+fn path_integrator_furnace_is_unbiased() {
+    // Inside the emissive sphere, light samples land on the sphere itself
+    // (area sampling from its own surface) and Russian roulette ends some
+    // paths: no longer constant, but the same mean.
+    for (diffuse, specular) in [(1.0, 0.0), (0.3, 0.7)] {
+        let material = Material {
+            color: Color::gray(0.7),
+            emission: Color::gray(1.5),
+            diffuse,
+            specular,
+            ..Material::default()
+        };
+        let (mean, error) = furnace_mean(Integrator::Path, material, 40_000);
+        let want = expected(1.5, 0.7);
+        assert!(
+            (mean.r - want).abs() < 4.0 * error + 1e-9,
+            "{} ± {error} vs {want}",
+            mean.r
+        );
+        assert!(error < 0.01 * want, "{error}");
+    }
 }

@@ -152,6 +152,7 @@ fn render_scene(scene: &Scene) -> (Image, u64) {
         seed: 9,
         threads: None,
         integrator: Integrator::Original,
+        max_depth: 5,
         sampler: SamplerKind::Sobol,
         progress: false,
         clamp: None,

@@ -57,6 +57,14 @@ pub struct SamplingOptions {
     /// `independent` (one random generator per pixel sample).
     #[arg(long, default_value = "sobol", value_parser = parse_sampler)]
     pub sampler: SamplerKind,
+    /// Estimator: `path` (next-event estimation with MIS, the default) or
+    /// `original` (the original renderer's estimator). Both have the same
+    /// expected image.
+    #[arg(long, default_value = "path", value_parser = parse_integrator)]
+    pub integrator: Integrator,
+    /// Scattering vertices before a path ends (the original: 5).
+    #[arg(long, default_value_t = 5)]
+    pub max_depth: u32,
     /// BIASED: scale every sample down to at most this luminance, trading
     /// energy for the absence of fireflies. Off by default.
     #[arg(long)]
@@ -73,7 +81,8 @@ impl SamplingOptions {
             spp,
             seed: self.seed,
             threads: self.threads.map(|t| t as usize),
-            integrator: Integrator::Original,
+            integrator: self.integrator,
+            max_depth: self.max_depth,
             sampler: self.sampler,
             progress,
             clamp: self.clamp,
@@ -85,6 +94,13 @@ fn parse_sampler(name: &str) -> Result<SamplerKind, String> {
     SamplerKind::from_name(name).ok_or_else(|| {
         let names: Vec<&str> = SamplerKind::ALL.iter().map(|k| k.name()).collect();
         format!("unknown sampler '{name}' (one of: {})", names.join(", "))
+    })
+}
+
+fn parse_integrator(name: &str) -> Result<Integrator, String> {
+    Integrator::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
+        format!("unknown integrator '{name}' (one of: {})", names.join(", "))
     })
 }
 

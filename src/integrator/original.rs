@@ -7,7 +7,7 @@
 //! value, and costs one path per sample.
 
 use crate::color::Color;
-use crate::math::Ray;
+use crate::math::{Ray, Vec3};
 use crate::sampler::Sampler;
 use crate::sampling::{cosine_hemisphere, dielectric, reflect};
 use crate::shading::Shading;
@@ -19,7 +19,7 @@ use super::lights;
 pub const MAX_DEPTH: u32 = 5;
 
 /// Diffuse rates at or below this are ignored (the original's threshold).
-const MIN_DIFFUSE_RATE: f64 = 1e-4;
+pub(super) const MIN_DIFFUSE_RATE: f64 = 1e-4;
 
 pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color {
     let mut result = Color::BLACK;
@@ -62,23 +62,34 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
         } else if pick < diffuse + specular {
             reflect(&ray.direction, &at.normal)
         } else {
-            let glass = dielectric(&ray.direction, &at.normal, at.entering, material.ior);
-            match glass.refracted {
-                None => glass.reflected,
-                Some(refracted) => {
-                    // smallpt's Russian roulette between the two glass lobes.
-                    let p = 0.25 + 0.5 * glass.reflectance;
-                    if sampler.next_f64() < p {
-                        throughput *= glass.reflectance / p;
-                        glass.reflected
-                    } else {
-                        throughput *= (1.0 - glass.reflectance) / (1.0 - p);
-                        refracted
-                    }
-                }
-            }
+            glass_direction(&ray, &at, sampler, &mut throughput)
         };
         ray = Ray::new(at.spawn_origin(&direction), direction, ray.time);
     }
     result
+}
+
+/// The glass lobe: smallpt's Russian roulette between reflection and
+/// refraction (reflection only under total internal reflection), with its
+/// weight folded into `throughput`.
+pub(super) fn glass_direction(
+    ray: &Ray,
+    at: &Shading,
+    sampler: &mut Sampler,
+    throughput: &mut Color,
+) -> Vec3 {
+    let glass = dielectric(&ray.direction, &at.normal, at.entering, at.material.ior);
+    match glass.refracted {
+        None => glass.reflected,
+        Some(refracted) => {
+            let p = 0.25 + 0.5 * glass.reflectance;
+            if sampler.next_f64() < p {
+                *throughput *= glass.reflectance / p;
+                glass.reflected
+            } else {
+                *throughput *= (1.0 - glass.reflectance) / (1.0 - p);
+                refracted
+            }
+        }
+    }
 }

@@ -1,0 +1,159 @@
+//! The default estimator: the original's expected image with next-event
+//! estimation (NEE) and multiple importance sampling (MIS, power heuristic)
+//! at diffuse vertices, and Russian roulette on the path throughput.
+//!
+//! Bookkeeping of path lengths, so that the expectation is the original's:
+//! hit `k` (the camera hit is hit 1) adds its emission when `k <= max_depth + 1`,
+//! and scattering happens at hits `1..=max_depth`. A light sample taken at
+//! scattering vertex `k` stands for a path ending at hit `k + 1`, so NEE runs
+//! at every scattering vertex (`1..=max_depth`, the last one included), and
+//! the BSDF ray of that vertex, which finds hit `k + 1`, weights the emission
+//! there by the matching MIS weight. Both strategies thus cover exactly the
+//! same set of paths. Emission reached after a mirror or glass vertex, by a
+//! camera ray, or on an emitter that light sampling never picks (planes,
+//! revolution surfaces, ellipsoids) counts fully.
+//!
+//! Lobes are chosen as in [`super::original`], by rate; NEE belongs to the
+//! diffuse lobe only, with BRDF `color / pi` about the shading normal (the
+//! cosine hemisphere of the original). The PA1 point and directional lights
+//! are added exactly as the original does.
+
+use std::f64::consts::PI;
+
+use crate::color::Color;
+use crate::math::{Point3, Ray};
+use crate::sampler::Sampler;
+use crate::sampling::{cosine_hemisphere, reflect};
+use crate::shading::Shading;
+
+use super::SceneView;
+use super::lights;
+use super::original::{MIN_DIFFUSE_RATE, glass_direction};
+
+/// Scattering vertices after which Russian roulette may end a path.
+const ROULETTE_DEPTH: u32 = 3;
+
+/// Shadow rays stop this fraction short of the light point, so that they do
+/// not find the emitter itself.
+const SHADOW_SHORTENING: f64 = 1e-7;
+
+/// Where the current ray left a diffuse vertex: what MIS needs to weight the
+/// emission the ray finds.
+#[derive(Clone, Copy)]
+struct DiffuseOrigin {
+    point: Point3,
+    /// Density of the ray's direction under cosine sampling.
+    pdf: f64,
+}
+
+pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color {
+    let mut result = Color::BLACK;
+    let mut throughput = Color::WHITE;
+    let mut depth = 0;
+    // `None`: the ray came from the camera or a delta lobe (weight 1).
+    let mut origin: Option<DiffuseOrigin> = None;
+    loop {
+        let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
+            if depth == 0 {
+                result += throughput * view.scene.background;
+            }
+            break;
+        };
+        let at = Shading::new(view.scene, &hit, &ray);
+        let material = at.material;
+        if !material.emission.is_black() {
+            let weight = match origin {
+                None => 1.0,
+                Some(from) => {
+                    let light_pdf = view.emitters.pdf(&from.point, ray.time, &hit);
+                    power_heuristic(from.pdf, light_pdf)
+                }
+            };
+            result += throughput * material.emission * weight;
+        }
+        depth += 1;
+        if depth > view.max_depth || at.color.is_black() {
+            break;
+        }
+        let diffuse = if material.diffuse > MIN_DIFFUSE_RATE {
+            material.diffuse
+        } else {
+            0.0
+        };
+        if diffuse > 0.0 && !view.direct_lights.is_empty() {
+            result += throughput * lights::direct(view.world, view.direct_lights, &at) * diffuse;
+        }
+        let specular = material.specular.max(0.0);
+        let refract = material.refract.max(0.0);
+        let total = diffuse + specular + refract;
+        if total <= 0.0 {
+            break;
+        }
+        // The lobe weight over its probability, as in the original.
+        throughput *= at.color * total;
+        let pick = sampler.next_f64() * total;
+        let direction = if pick < diffuse {
+            result += throughput * light_sample(view, &at, ray.time, sampler);
+            let direction = cosine_hemisphere(&at.normal, sampler.next_2d());
+            origin = Some(DiffuseOrigin {
+                point: at.point,
+                pdf: at.normal.dot(&direction).max(0.0) / PI,
+            });
+            direction
+        } else {
+            origin = None;
+            if pick < diffuse + specular {
+                reflect(&ray.direction, &at.normal)
+            } else {
+                glass_direction(&ray, &at, sampler, &mut throughput)
+            }
+        };
+        if depth >= ROULETTE_DEPTH {
+            let survival = throughput.max_component().min(1.0);
+            if survival < 1.0 {
+                if sampler.next_f64() >= survival {
+                    break;
+                }
+                throughput = throughput / survival;
+            }
+        }
+        ray = Ray::new(at.spawn_origin(&direction), direction, ray.time);
+    }
+    debug_assert!(result.is_finite() || !throughput.is_finite());
+    result
+}
+
+/// One light sample at a diffuse vertex, MIS-weighted against cosine
+/// sampling: `(1/pi) L_e cos / pdf_light * w_light`. The caller multiplies by
+/// the throughput, which already holds the vertex colour and lobe weight.
+fn light_sample(view: &SceneView, at: &Shading, time: f64, sampler: &mut Sampler) -> Color {
+    if view.emitters.is_empty() {
+        return Color::BLACK;
+    }
+    let select = sampler.next_f64();
+    let u = sampler.next_2d();
+    let Some(light) = view.emitters.sample(&at.point, time, select, u) else {
+        return Color::BLACK;
+    };
+    let cosine = at.normal.dot(&light.direction);
+    if cosine <= 0.0 {
+        return Color::BLACK;
+    }
+    let shadow = Ray::new(at.spawn_origin(&light.direction), light.direction, time);
+    if view
+        .world
+        .occluded(&shadow, 0.0, light.distance * (1.0 - SHADOW_SHORTENING))
+    {
+        return Color::BLACK;
+    }
+    let bsdf_pdf = cosine / PI;
+    let weight = power_heuristic(light.pdf, bsdf_pdf);
+    light.emission * (cosine / PI / light.pdf * weight)
+}
+
+/// The power heuristic (exponent 2) for one sample of density `f` against
+/// another strategy of density `g`.
+fn power_heuristic(f: f64, g: f64) -> f64 {
+    let (f2, g2) = (f * f, g * g);
+    if f2 + g2 > 0.0 { f2 / (f2 + g2) } else { 0.0 }
+}

@@ -1,0 +1,222 @@
+//! The emitter table of next-event estimation: every emissive primitive whose
+//! shape can be sampled, one entry per shape (per triangle for meshes), chosen
+//! in proportion to its power (emission luminance x area).
+//!
+//! Sampled: spheres (under similarity transforms only; a non-uniformly scaled
+//! sphere is an ellipsoid and is left to BSDF sampling), triangles,
+//! rectangles, disks and mesh triangles, with any transform. Not sampled, so
+//! reached by BSDF sampling alone (MIS weight 1): planes, surfaces of
+//! revolution, the background, and the coursework `Light::Disk` /
+//! `Light::Area` entries, which have no geometry in the world and which the
+//! original estimator ignores too. The PA1 point and directional lights are
+//! not in this table: both integrators add them in `integrator::lights`.
+
+pub mod distribution;
+pub mod emitter;
+
+#[cfg(test)]
+mod tests;
+
+use crate::color::Color;
+use crate::geometry::{Shape, Transform};
+use crate::math::{Point3, Vec3, orthonormal_basis, transform_point, transform_vector};
+use crate::scene::model::Scene;
+use crate::world::{Primitive, World, WorldHit};
+
+pub use distribution::Distribution;
+pub use emitter::{EmitterShape, ShapeSample};
+
+/// No entry for this primitive.
+const NONE: u32 = u32::MAX;
+
+/// Relative tolerance of the similarity test for transformed spheres.
+const SIMILARITY_TOLERANCE: f64 = 1e-9;
+
+#[derive(Clone, Copy, Debug)]
+pub struct Emitter {
+    pub shape: EmitterShape,
+    pub emission: Color,
+}
+
+/// A sampled light point as seen from a shading point.
+#[derive(Clone, Copy, Debug)]
+pub struct LightSample {
+    pub point: Point3,
+    /// Unit direction from the shading point to `point`.
+    pub direction: Vec3,
+    pub distance: f64,
+    pub emission: Color,
+    /// Density in solid angle, including the probability of picking the emitter.
+    pub pdf: f64,
+}
+
+/// The emitters of a world and the distribution they are picked by.
+#[derive(Clone, Debug, Default)]
+pub struct Emitters {
+    entries: Vec<Emitter>,
+    distribution: Option<Distribution>,
+    /// Per world primitive: its first entry, or `NONE`. A mesh's triangle `k`
+    /// is entry `first + k`.
+    first_entry: Vec<u32>,
+}
+
+impl Emitters {
+    pub fn build(scene: &Scene, world: &World) -> Emitters {
+        let mut entries = Vec::new();
+        let mut first_entry = vec![NONE; world.primitives().len()];
+        for (index, primitive) in world.primitives().iter().enumerate() {
+            let Some(material) = scene.materials.get(primitive.material) else {
+                continue;
+            };
+            if material.emission.is_black() {
+                continue;
+            }
+            let start = entries.len();
+            push_shapes(primitive, &mut |shape| {
+                entries.push(Emitter {
+                    shape,
+                    emission: material.emission,
+                })
+            });
+            if entries.len() > start {
+                first_entry[index] = start as u32;
+            }
+        }
+        let weights: Vec<f64> = entries
+            .iter()
+            .map(|e| e.emission.luminance().max(0.0) * e.shape.area())
+            .collect();
+        let distribution = Distribution::new(&weights);
+        Emitters {
+            entries,
+            distribution,
+            first_entry,
+        }
+    }
+
+    /// Whether light sampling has nothing to pick.
+    pub fn is_empty(&self) -> bool {
+        self.distribution.is_none()
+    }
+
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// Picks an emitter with `select` and a point on it with `u`, as seen from
+    /// `reference` at shutter time `time`.
+    pub fn sample(
+        &self,
+        reference: &Point3,
+        time: f64,
+        select: f64,
+        u: [f64; 2],
+    ) -> Option<LightSample> {
+        let (index, probability) = self.distribution.as_ref()?.sample(select);
+        let emitter = &self.entries[index];
+        let sample = emitter.shape.sample(reference, time, u)?;
+        Some(LightSample {
+            point: sample.point,
+            direction: sample.direction,
+            distance: sample.distance,
+            emission: emitter.emission,
+            pdf: sample.pdf * probability,
+        })
+    }
+
+    /// The density (solid angle, with the pick probability) with which
+    /// [`Emitters::sample`] from `reference` gives the point of `hit`; 0 for
+    /// everything light sampling never produces.
+    pub fn pdf(&self, reference: &Point3, time: f64, hit: &WorldHit) -> f64 {
+        let Some(distribution) = &self.distribution else {
+            return 0.0;
+        };
+        let first = self.first_entry.get(hit.primitive).copied().unwrap_or(NONE);
+        if first == NONE {
+            return 0.0;
+        }
+        let index = first as usize + hit.element as usize;
+        let probability = distribution.pmf(index);
+        if probability <= 0.0 {
+            return 0.0;
+        }
+        let shape = &self.entries[index].shape;
+        probability * shape.pdf(reference, time, &hit.point, &hit.geometric_normal)
+    }
+}
+
+/// The world-space sampling shapes of a primitive (none when it cannot be sampled).
+fn push_shapes(primitive: &Primitive, push: &mut dyn FnMut(EmitterShape)) {
+    let transform = primitive.transform.as_deref();
+    let point = |p: &Point3| match transform {
+        Some(t) => transform_point(&t.matrix, p),
+        None => *p,
+    };
+    let vector = |v: &Vec3| match transform {
+        Some(t) => transform_vector(&t.matrix, v),
+        None => *v,
+    };
+    match &primitive.shape {
+        Shape::Sphere(sphere) => {
+            let scale = match transform {
+                None => 1.0,
+                Some(t) => match similarity_scale(t) {
+                    Some(scale) => scale,
+                    None => return,
+                },
+            };
+            push(EmitterShape::Sphere {
+                center: point(&sphere.center),
+                motion: vector(&sphere.motion),
+                radius: sphere.radius * scale,
+            });
+        }
+        Shape::Triangle(triangle) => push(EmitterShape::Triangle {
+            vertices: triangle.vertices.map(|p| point(&p)),
+        }),
+        Shape::Rectangle(rectangle) => push(EmitterShape::Parallelogram {
+            origin: point(&rectangle.origin),
+            edge_u: vector(&rectangle.edge_u),
+            edge_v: vector(&rectangle.edge_v),
+        }),
+        Shape::Disk(disk) => {
+            let (e1, e2) = orthonormal_basis(&disk.normal);
+            push(EmitterShape::Ellipse {
+                center: point(&disk.center),
+                axis_u: vector(&(e1 * disk.radius)),
+                axis_v: vector(&(e2 * disk.radius)),
+            });
+        }
+        Shape::Mesh { mesh, .. } => {
+            // One entry per triangle, invalid ones included (with zero area),
+            // so that triangle k of the mesh is entry first + k.
+            let positions = &mesh.data.positions;
+            for triangle in &mesh.data.triangles {
+                let vertex = |i: u32| positions.get(i as usize).map(point);
+                let vertices = match (
+                    vertex(triangle[0]),
+                    vertex(triangle[1]),
+                    vertex(triangle[2]),
+                ) {
+                    (Some(a), Some(b), Some(c)) => [a, b, c],
+                    _ => [Point3::zeros(); 3],
+                };
+                push(EmitterShape::Triangle { vertices });
+            }
+        }
+        Shape::Plane(_) | Shape::Revolution(_) => {}
+    }
+}
+
+/// `s` when the linear part of `transform` is `s` times a rotation (or
+/// reflection), else `None`.
+fn similarity_scale(transform: &Transform) -> Option<f64> {
+    let linear = transform.matrix.fixed_view::<3, 3>(0, 0).into_owned();
+    let gram = linear.transpose() * linear;
+    let scale_squared = gram.trace() / 3.0;
+    if !(scale_squared > 0.0 && scale_squared.is_finite()) {
+        return None;
+    }
+    let off = (gram - nalgebra::Matrix3::identity() * scale_squared).amax();
+    (off <= SIMILARITY_TOLERANCE * scale_squared).then(|| scale_squared.sqrt())
+}

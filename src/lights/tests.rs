@@ -1,0 +1,255 @@
+//! Tests of light sampling: densities against hit counting, and the table
+//! lookup of world hits (transforms, mesh triangles, excluded ellipsoids).
+
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+use super::emitter::uniform_sphere;
+use super::*;
+use crate::color::Color;
+use crate::geometry::{Disk, Rectangle, Shape, Sphere, Triangle};
+use crate::math::Ray;
+use crate::rng::Rng;
+use crate::scene::model::{Object, Scene};
+use crate::world::World;
+
+/// `E[1 / pdf]` over light samples (the solid angle the sampler covers),
+/// checking on the way that `pdf` agrees with the density of `sample`.
+fn sampled_solid_angle(shape: &EmitterShape, reference: &Point3, n: usize) -> f64 {
+    let mut rng = Rng::new(3, 4);
+    let mut sum = 0.0;
+    for _ in 0..n {
+        let Some(s) = shape.sample(reference, 0.0, [rng.next_f64(), rng.next_f64()]) else {
+            continue;
+        };
+        assert!((s.direction.norm() - 1.0).abs() < 1e-12);
+        assert!((reference + s.direction * s.distance - s.point).norm() < 1e-9);
+        let normal = match shape {
+            EmitterShape::Sphere { center, .. } => (s.point - center).normalize(),
+            _ => shape.sample_area(0.0, [0.5, 0.5]).1,
+        };
+        let pdf = shape.pdf(reference, 0.0, &s.point, &normal);
+        assert!((pdf - s.pdf).abs() <= 1e-9 * s.pdf, "{pdf} vs {}", s.pdf);
+        sum += 1.0 / s.pdf;
+    }
+    sum / n as f64
+}
+
+/// 4 pi times the fraction of uniform directions from `reference` that hit `shape`.
+fn hit_solid_angle(shape: &Shape, reference: &Point3, n: usize) -> f64 {
+    let mut rng = Rng::new(5, 6);
+    let hits = (0..n)
+        .filter(|_| {
+            let d = uniform_sphere([rng.next_f64(), rng.next_f64()]);
+            let ray = Ray::new(*reference, d, 0.0);
+            shape.intersect(&ray, 0.0, f64::INFINITY).is_some()
+        })
+        .count();
+    4.0 * PI * hits as f64 / n as f64
+}
+
+#[test]
+fn densities_are_consistent_and_cover_the_visible_solid_angle() {
+    let reference = Point3::new(0.2, -0.1, 0.0);
+    let (a, b, c) = (
+        Point3::new(-0.5, -0.4, -1.0),
+        Point3::new(0.8, -0.2, -1.2),
+        Point3::new(0.1, 0.7, -0.9),
+    );
+    let (origin, edge_u, edge_v) = (
+        Point3::new(-0.5, 0.6, -0.5),
+        Vec3::new(1.0, 0.0, -0.2),
+        Vec3::new(0.3, 0.2, -1.0),
+    );
+    let normal = Vec3::new(0.3, 0.2, 1.0).normalize();
+    let (e1, e2) = orthonormal_basis(&normal);
+    let center = Point3::new(0.0, 0.0, -1.0);
+    let cases = [
+        (
+            EmitterShape::Triangle {
+                vertices: [a, b, c],
+            },
+            Shape::Triangle(Triangle::new([a, b, c])),
+        ),
+        (
+            EmitterShape::Parallelogram {
+                origin,
+                edge_u,
+                edge_v,
+            },
+            Shape::Rectangle(Rectangle::new(origin, edge_u, edge_v).unwrap()),
+        ),
+        (
+            EmitterShape::Ellipse {
+                center,
+                axis_u: e1 * 0.6,
+                axis_v: e2 * 0.6,
+            },
+            Shape::Disk(Disk::new(center, normal, 0.6).unwrap()),
+        ),
+        (
+            EmitterShape::Sphere {
+                center,
+                motion: Vec3::zeros(),
+                radius: 0.5,
+            },
+            Shape::Sphere(Sphere::new(center, 0.5, Vec3::zeros())),
+        ),
+    ];
+    for (emitter, shape) in cases {
+        let sampled = sampled_solid_angle(&emitter, &reference, 100_000);
+        let hit = hit_solid_angle(&shape, &reference, 400_000);
+        assert!(
+            (sampled - hit).abs() < 0.03 * hit,
+            "{emitter:?}: sampled {sampled} vs hit {hit}"
+        );
+    }
+}
+
+#[test]
+fn sphere_seen_from_inside_or_its_surface_covers_all_directions() {
+    let sphere = EmitterShape::Sphere {
+        center: Point3::zeros(),
+        motion: Vec3::zeros(),
+        radius: 2.0,
+    };
+    for reference in [Point3::new(0.3, -1.0, 0.5), Point3::new(0.0, 2.0, 0.0)] {
+        let omega = sampled_solid_angle(&sphere, &reference, 200_000);
+        // From inside every direction sees the sphere; from a point on it,
+        // the inner half space (2 pi), sampled by area.
+        let want = if reference.norm() < 2.0 { 4.0 } else { 2.0 } * PI;
+        assert!((omega - want).abs() < 0.03 * want, "{omega} vs {want}");
+    }
+}
+
+#[test]
+fn tiny_distant_sphere_has_the_small_cone_density() {
+    let sphere = EmitterShape::Sphere {
+        center: Point3::new(0.0, 0.0, 1e4),
+        motion: Vec3::zeros(),
+        radius: 1e-3,
+    };
+    let s = sphere.sample(&Point3::zeros(), 0.0, [0.3, 0.7]).unwrap();
+    let want = 1.0 / (PI * 1e-14); // 1 / (pi (r/d)^2) in the small-angle limit
+    assert!((s.pdf - want).abs() < 1e-6 * want);
+    assert!((s.distance - (1e4 - 1e-3)).abs() < 1e-3);
+}
+
+fn scene(materials: Vec<crate::scene::model::Material>, root: Object) -> Scene {
+    use crate::scene::model::{CameraDesc, Dialect};
+    Scene {
+        camera: CameraDesc {
+            center: Point3::zeros(),
+            direction: -Vec3::z(),
+            up: Vec3::y(),
+            width: 4,
+            height: 4,
+            fov: None,
+            canvas_distance: 0.0,
+            focus_distance: 1.0,
+            lens_radius: 0.0,
+        },
+        background: Color::BLACK,
+        materials,
+        textures: Vec::new(),
+        lights: Vec::new(),
+        root,
+        dialect: Dialect::Canonical,
+        warnings: Vec::new(),
+        unsupported: Vec::new(),
+        load: Default::default(),
+    }
+}
+
+fn transformed(matrix: crate::math::Matrix, child: Object) -> Object {
+    Object::Transform {
+        matrix,
+        inverse: matrix.try_inverse().unwrap(),
+        child: Box::new(child),
+    }
+}
+
+#[test]
+fn world_hits_find_the_density_their_light_sample_had() {
+    use crate::math::Matrix;
+    use crate::scene::model::{Material, MeshData};
+    let emissive = Material {
+        emission: Color::new(1.0, 2.0, 3.0),
+        ..Material::default()
+    };
+    let mesh = Arc::new(MeshData {
+        positions: vec![
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(1.0, 0.0, 0.0),
+            Point3::new(1.0, 1.0, 0.0),
+            Point3::new(0.0, 1.0, 0.2),
+        ],
+        normals: None,
+        uvs: None,
+        triangles: vec![[0, 1, 2], [0, 2, 3], [0, 1, 9]],
+    });
+    let root = Object::Group(vec![
+        transformed(
+            Matrix::new_translation(&Vec3::new(-1.0, -0.5, -4.0))
+                * Matrix::new_nonuniform_scaling(&Vec3::new(2.0, 1.0, 0.5)),
+            Object::Mesh {
+                mesh,
+                smooth: false,
+                material: 0,
+            },
+        ),
+        transformed(
+            Matrix::new_translation(&Vec3::new(2.0, 0.0, -5.0)) * Matrix::new_scaling(2.0),
+            Object::Sphere {
+                center: Point3::zeros(),
+                radius: 0.3,
+                motion: Vec3::zeros(),
+                material: 0,
+            },
+        ),
+        transformed(
+            Matrix::new_translation(&Vec3::new(-2.0, 0.0, -5.0))
+                * Matrix::new_nonuniform_scaling(&Vec3::new(1.0, 3.0, 1.0)),
+            Object::Sphere {
+                center: Point3::zeros(),
+                radius: 0.3,
+                motion: Vec3::zeros(),
+                material: 0,
+            },
+        ),
+    ]);
+    let scene = scene(vec![emissive], root);
+    let world = World::build(&scene);
+    let emitters = Emitters::build(&scene, &world);
+    // Three mesh triangles (one invalid, never picked) and one sphere; the
+    // ellipsoid is left to BSDF sampling.
+    assert_eq!(emitters.len(), 4);
+    let reference = Point3::new(0.1, 0.2, 0.5);
+    let mut rng = Rng::new(9, 9);
+    let mut seen = [0usize; 2];
+    for _ in 0..2000 {
+        let u = [rng.next_f64(), rng.next_f64()];
+        let light = emitters
+            .sample(&reference, 0.0, rng.next_f64(), u)
+            .expect("every sample is usable from here");
+        let ray = Ray::new(reference, light.direction, 0.0);
+        let hit = world.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+        assert!((hit.t - light.distance).abs() < 1e-9 * light.distance.max(1.0));
+        seen[hit.primitive] += 1;
+        let pdf = emitters.pdf(&reference, 0.0, &hit);
+        assert!(
+            (pdf - light.pdf).abs() < 1e-6 * light.pdf,
+            "{pdf} vs {}",
+            light.pdf
+        );
+    }
+    assert!(seen[0] > 0 && seen[1] > 0);
+    let ellipsoid = Ray::new(
+        reference,
+        (Point3::new(-2.0, 0.0, -5.0) - reference).normalize(),
+        0.0,
+    );
+    let hit = world.intersect(&ellipsoid, 0.0, f64::INFINITY).unwrap();
+    assert_eq!(hit.primitive, 2);
+    assert_eq!(emitters.pdf(&reference, 0.0, &hit), 0.0);
+}
