@@ -104,9 +104,55 @@ pub fn read_csv_series(text: &str, column: &str) -> Result<Vec<(f64, f64)>, Stri
         .collect()
 }
 
+/// When a curve of (seconds, error) first reaches `target`: interpolated on
+/// log-log axes between the two points around it. `Reach::Extrapolated` when
+/// the curve ends above the target (error taken as proportional to 1/time
+/// from the last point, the Monte Carlo rate).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Reach {
+    Measured(f64),
+    Extrapolated(f64),
+}
+
+pub fn time_to_reach(points: &[(f64, f64)], target: f64) -> Option<Reach> {
+    let usable: Vec<(f64, f64)> = points
+        .iter()
+        .copied()
+        .filter(|(x, y)| x.is_finite() && y.is_finite() && *x > 0.0 && *y > 0.0)
+        .collect();
+    let first = usable.first()?;
+    if first.1 <= target {
+        return Some(Reach::Measured(first.0));
+    }
+    for pair in usable.windows(2) {
+        let ((x0, y0), (x1, y1)) = (pair[0], pair[1]);
+        if y1 <= target {
+            let f = (target.ln() - y0.ln()) / (y1.ln() - y0.ln());
+            return Some(Reach::Measured((x0.ln() + f * (x1.ln() - x0.ln())).exp()));
+        }
+    }
+    let (x, y) = *usable.last()?;
+    Some(Reach::Extrapolated(x * y / target))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn time_to_reach_interpolates_on_log_log_axes() {
+        let curve = [(1.0, 1.0), (4.0, 0.25), (16.0, 0.0625)];
+        match time_to_reach(&curve, 0.5) {
+            Some(Reach::Measured(t)) => assert!((t - 2.0).abs() < 1e-12, "{t}"),
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(time_to_reach(&curve, 2.0), Some(Reach::Measured(1.0)));
+        match time_to_reach(&curve, 0.01) {
+            Some(Reach::Extrapolated(t)) => assert!((t - 100.0).abs() < 1e-9),
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(time_to_reach(&[], 1.0), None);
+    }
 
     #[test]
     fn csv_round_trips() {

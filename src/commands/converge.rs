@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use pathtracer::converge::{converge, read_csv_series, to_csv};
+use pathtracer::converge::{Reach, converge, read_csv_series, time_to_reach, to_csv};
 use pathtracer::image_io::{read_image, write_image};
 use pathtracer::plot::{Series, log_log_svg};
 use pathtracer::render::render;
@@ -107,6 +107,9 @@ pub struct PlotArgs {
     /// The column plotted against seconds.
     #[arg(long, default_value = "rel_mse")]
     column: String,
+    /// Also print when each curve first reaches this value of the column.
+    #[arg(long)]
+    time_to: Option<f64>,
 }
 
 pub fn plot(args: &PlotArgs) -> Result<(), String> {
@@ -127,6 +130,14 @@ pub fn plot(args: &PlotArgs) -> Result<(), String> {
             std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
         let points =
             read_csv_series(&text, &args.column).map_err(|e| format!("{}: {e}", path.display()))?;
+        if let Some(target) = args.time_to {
+            let reach = match time_to_reach(&points, target) {
+                Some(Reach::Measured(t)) => format!("{t:.3} s"),
+                Some(Reach::Extrapolated(t)) => format!("{t:.3} s (extrapolated)"),
+                None => "no data".to_string(),
+            };
+            println!("{name}: {} {target:.4e} reached at {reach}", args.column);
+        }
         series.push(Series { name, points });
     }
     let svg = log_log_svg(&args.title, "seconds", &args.column, &series);
