@@ -147,3 +147,40 @@ fn check_reports_every_shared_scene() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert_eq!(stdout.matches("report_scene").count(), 3, "{stdout}");
 }
+
+#[test]
+fn every_project_testcase_renders_without_nan() {
+    let dir = temp_dir("testcases");
+    let mut count = 0;
+    for entry in std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("testcases")).unwrap()
+    {
+        let scene = entry.unwrap().path();
+        if scene.extension().is_none_or(|e| e != "txt") {
+            continue;
+        }
+        let out = dir.join("image.pfm");
+        let output = pathtracer(&[
+            "render",
+            scene.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--width",
+            "32",
+            "--height",
+            "24",
+            "--spp",
+            "8",
+            "--quiet",
+        ]);
+        let stdout = String::from_utf8_lossy(&output.stdout);
+        assert!(
+            output.status.success(),
+            "{}: {}",
+            scene.display(),
+            String::from_utf8_lossy(&output.stderr)
+        );
+        assert!(stdout.contains(" 0 NaN/Inf samples dropped"), "{stdout}");
+        count += 1;
+    }
+    assert!(count >= 3, "{count} testcases");
+}
