@@ -180,6 +180,9 @@ fn every_project_testcase_renders_without_nan() {
             String::from_utf8_lossy(&output.stderr)
         );
         assert!(stdout.contains(" 0 NaN/Inf samples dropped"), "{stdout}");
+        // An HDR result carries its sample count in a sidecar.
+        let sidecar = std::fs::read_to_string(dir.join("image.pfm.json")).unwrap();
+        assert!(sidecar.contains("\"spp\": 8,"), "{sidecar}");
         count += 1;
     }
     assert!(count >= 3, "{count} testcases");

@@ -7,7 +7,7 @@ use clap::Args;
 
 use pathtracer::adaptive::{StoppingRule, render_adaptive};
 use pathtracer::film::Film;
-use pathtracer::image_io::{check_writable, write_image};
+use pathtracer::image_io::{check_writable, write_atomically, write_image};
 use pathtracer::render::{SamplingPlan, render_into};
 use pathtracer::scene::model::Scene;
 use pathtracer::world::World;
@@ -75,6 +75,25 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     }
     write_image(&output, &image, args.gamma)?;
     let pixels = (settings.width as u64 * settings.height as u64).max(1);
+    if is_hdr(&output) {
+        // HDR images are measurements: say how they were made, next to them.
+        let sidecar = output.with_extension("pfm.json");
+        let json = format!(
+            "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}}}\n",
+            args.scene.display().to_string(),
+            settings.width,
+            settings.height,
+            stats.samples as f64 / pixels as f64,
+            stats.samples,
+            stats.seconds,
+            settings.seed,
+            settings.integrator.name(),
+            settings.sampler.name(),
+            settings.max_depth,
+            settings.clamp.map_or("null".to_string(), |c| c.to_string()),
+        );
+        write_atomically(&sidecar, json.as_bytes())?;
+    }
     println!(
         "{}: {}x{}, {:.1} spp spent, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped, {} fireflies{}",
         output.display(),
@@ -141,4 +160,9 @@ fn print_phases(scene: &Scene, world: &World, world_seconds: f64, render_seconds
             "off (nothing moves)"
         }
     );
+}
+
+fn is_hdr(path: &std::path::Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("pfm"))
 }
