@@ -26,7 +26,7 @@ impl<'a> Shading<'a> {
         let material = scene
             .materials
             .get(hit.material)
-            .unwrap_or(&FALLBACK_MATERIAL);
+            .unwrap_or(&Material::DEFAULT);
         let entering = hit.geometric_normal.dot(&ray.direction) < 0.0;
         let geometric = if entering {
             hit.geometric_normal
@@ -64,18 +64,6 @@ impl<'a> Shading<'a> {
         offset_origin(&self.point, &self.geometric, direction)
     }
 }
-
-static FALLBACK_MATERIAL: Material = Material {
-    color: Color::WHITE,
-    emission: Color::BLACK,
-    diffuse: 1.0,
-    specular: 0.0,
-    refract: 0.0,
-    ior: 1.5,
-    texture: None,
-    normal_map: None,
-    roughness: 0.0,
-};
 
 /// Tangent-space normal mapping: texel (r, g, b) in [0, 1] is the normal
 /// (2r - 1, 2g - 1, 2b - 1) in the frame (tangent, bitangent, normal).

@@ -287,16 +287,7 @@ impl Builder {
                 Revolution::new(profile).map(|r| Shape::Revolution(Arc::new(r)))
             }
         };
-        let material = match object {
-            Object::Sphere { material, .. }
-            | Object::Plane { material, .. }
-            | Object::Triangle { material, .. }
-            | Object::Rectangle { material, .. }
-            | Object::Disk { material, .. }
-            | Object::Mesh { material, .. }
-            | Object::Revolution { material, .. } => *material,
-            Object::Group(_) | Object::Transform { .. } => 0,
-        };
+        let material = object.material().unwrap_or(0);
         if let Some(shape) = shape {
             let transform = transform
                 .filter(|t| !t.is_identity())

@@ -5,7 +5,7 @@
 //! that a PA1 scene looks as its author saw it.
 
 use crate::color::Color;
-use crate::scene::model::{Light, Object, Scene};
+use crate::scene::model::{Light, Scene};
 use crate::shading::Shading;
 use crate::world::World;
 
@@ -13,17 +13,7 @@ use crate::world::World;
 pub fn direct_lights(scene: &Scene) -> &[Light] {
     let mut has_emitter = false;
     scene.root.for_each_leaf(&mut |leaf| {
-        let material = match leaf {
-            Object::Sphere { material, .. }
-            | Object::Plane { material, .. }
-            | Object::Triangle { material, .. }
-            | Object::Rectangle { material, .. }
-            | Object::Disk { material, .. }
-            | Object::Mesh { material, .. }
-            | Object::Revolution { material, .. } => *material,
-            Object::Group(_) | Object::Transform { .. } => return,
-        };
-        if let Some(m) = scene.materials.get(material) {
+        if let Some(m) = leaf.material().and_then(|i| scene.materials.get(i)) {
             has_emitter |= !m.emission.is_black();
         }
     });

@@ -1,6 +1,7 @@
 //! Estimators of the radiance arriving along a camera ray.
 
 pub mod lights;
+pub mod lobes;
 pub mod original;
 pub mod path;
 

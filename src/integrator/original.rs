@@ -7,19 +7,16 @@
 //! value, and costs one path per sample.
 
 use crate::color::Color;
-use crate::math::{Ray, Vec3};
+use crate::math::Ray;
 use crate::sampler::Sampler;
-use crate::sampling::{cosine_hemisphere, dielectric, reflect};
+use crate::sampling::{cosine_hemisphere, reflect};
 use crate::shading::Shading;
 
 use super::SceneView;
-use super::lights;
+use super::lobes::{Lobe, Lobes, glass_direction, pa1_lights};
 
 /// Scattering vertices of the original before a path ends.
 pub const MAX_DEPTH: u32 = 5;
-
-/// Diffuse rates at or below this are ignored (the original's threshold).
-pub(super) const MIN_DIFFUSE_RATE: f64 = 1e-4;
 
 pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color {
     let mut result = Color::BLACK;
@@ -39,57 +36,18 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
         if depth > view.max_depth || at.color.is_black() {
             break;
         }
-        let diffuse = if material.diffuse > MIN_DIFFUSE_RATE {
-            material.diffuse
-        } else {
-            0.0
-        };
-        if diffuse > 0.0 && !view.direct_lights.is_empty() {
-            result += throughput * lights::direct(view.world, view.direct_lights, &at) * diffuse;
-        }
-        let specular = material.specular.max(0.0);
-        let refract = material.refract.max(0.0);
-        let total = diffuse + specular + refract;
-        if total <= 0.0 {
+        let lobes = Lobes::of(material);
+        result += throughput * pa1_lights(view, &at, &lobes);
+        if lobes.total() <= 0.0 {
             break;
         }
-        // One lobe, chosen with probability weight / total: the weight and the
-        // probability cancel but for `total` (1 for normalised materials).
-        throughput *= at.color * total;
-        let pick = sampler.next_f64() * total;
-        let direction = if pick < diffuse {
-            cosine_hemisphere(&at.normal, sampler.next_2d())
-        } else if pick < diffuse + specular {
-            reflect(&ray.direction, &at.normal)
-        } else {
-            glass_direction(&ray, &at, sampler, &mut throughput)
+        throughput *= at.color * lobes.total();
+        let direction = match lobes.pick(sampler.next_f64()) {
+            Lobe::Diffuse => cosine_hemisphere(&at.normal, sampler.next_2d()),
+            Lobe::Mirror => reflect(&ray.direction, &at.normal),
+            Lobe::Glass => glass_direction(&ray, &at, sampler, &mut throughput),
         };
         ray = Ray::new(at.spawn_origin(&direction), direction, ray.time);
     }
     result
-}
-
-/// The glass lobe: smallpt's Russian roulette between reflection and
-/// refraction (reflection only under total internal reflection), with its
-/// weight folded into `throughput`.
-pub(super) fn glass_direction(
-    ray: &Ray,
-    at: &Shading,
-    sampler: &mut Sampler,
-    throughput: &mut Color,
-) -> Vec3 {
-    let glass = dielectric(&ray.direction, &at.normal, at.entering, at.material.ior);
-    match glass.refracted {
-        None => glass.reflected,
-        Some(refracted) => {
-            let p = 0.25 + 0.5 * glass.reflectance;
-            if sampler.next_f64() < p {
-                *throughput *= glass.reflectance / p;
-                glass.reflected
-            } else {
-                *throughput *= (1.0 - glass.reflectance) / (1.0 - p);
-                refracted
-            }
-        }
-    }
 }

@@ -27,8 +27,7 @@ use crate::sampling::{cosine_hemisphere, reflect};
 use crate::shading::Shading;
 
 use super::SceneView;
-use super::lights;
-use super::original::{MIN_DIFFUSE_RATE, glass_direction};
+use super::lobes::{Lobe, Lobes, glass_direction, pa1_lights};
 
 /// Scattering vertices after which Russian roulette may end a path.
 const ROULETTE_DEPTH: u32 = 3;
@@ -75,38 +74,27 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
         if depth > view.max_depth || at.color.is_black() {
             break;
         }
-        let diffuse = if material.diffuse > MIN_DIFFUSE_RATE {
-            material.diffuse
-        } else {
-            0.0
-        };
-        if diffuse > 0.0 && !view.direct_lights.is_empty() {
-            result += throughput * lights::direct(view.world, view.direct_lights, &at) * diffuse;
-        }
-        let specular = material.specular.max(0.0);
-        let refract = material.refract.max(0.0);
-        let total = diffuse + specular + refract;
-        if total <= 0.0 {
+        let lobes = Lobes::of(material);
+        result += throughput * pa1_lights(view, &at, &lobes);
+        if lobes.total() <= 0.0 {
             break;
         }
         // The lobe weight over its probability, as in the original.
-        throughput *= at.color * total;
-        let pick = sampler.next_f64() * total;
-        let direction = if pick < diffuse {
-            result += throughput * light_sample(view, &at, ray.time, sampler);
-            let direction = cosine_hemisphere(&at.normal, sampler.next_2d());
-            origin = Some(DiffuseOrigin {
-                point: at.point,
-                pdf: at.normal.dot(&direction).max(0.0) / PI,
-            });
-            direction
-        } else {
-            origin = None;
-            if pick < diffuse + specular {
-                reflect(&ray.direction, &at.normal)
-            } else {
-                glass_direction(&ray, &at, sampler, &mut throughput)
+        throughput *= at.color * lobes.total();
+        let lobe = lobes.pick(sampler.next_f64());
+        origin = None;
+        let direction = match lobe {
+            Lobe::Diffuse => {
+                result += throughput * light_sample(view, &at, ray.time, sampler);
+                let direction = cosine_hemisphere(&at.normal, sampler.next_2d());
+                origin = Some(DiffuseOrigin {
+                    point: at.point,
+                    pdf: at.normal.dot(&direction).max(0.0) / PI,
+                });
+                direction
             }
+            Lobe::Mirror => reflect(&ray.direction, &at.normal),
+            Lobe::Glass => glass_direction(&ray, &at, sampler, &mut throughput),
         };
         if depth >= ROULETTE_DEPTH {
             let survival = throughput.max_component().min(1.0);

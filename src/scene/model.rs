@@ -169,19 +169,24 @@ pub struct Material {
     pub roughness: f64,
 }
 
+impl Material {
+    /// White, fully diffuse, not emitting, IOR 1.5.
+    pub const DEFAULT: Material = Material {
+        color: Color::WHITE,
+        emission: Color::BLACK,
+        diffuse: 1.0,
+        specular: 0.0,
+        refract: 0.0,
+        ior: 1.5,
+        texture: None,
+        normal_map: None,
+        roughness: 0.0,
+    };
+}
+
 impl Default for Material {
     fn default() -> Self {
-        Material {
-            color: Color::WHITE,
-            emission: Color::BLACK,
-            diffuse: 1.0,
-            specular: 0.0,
-            refract: 0.0,
-            ior: 1.5,
-            texture: None,
-            normal_map: None,
-            roughness: 0.0,
-        }
+        Material::DEFAULT
     }
 }
 
@@ -289,6 +294,20 @@ pub enum Object {
 }
 
 impl Object {
+    /// The material of a leaf; `None` for groups and transforms.
+    pub fn material(&self) -> Option<usize> {
+        match self {
+            Object::Sphere { material, .. }
+            | Object::Plane { material, .. }
+            | Object::Triangle { material, .. }
+            | Object::Rectangle { material, .. }
+            | Object::Disk { material, .. }
+            | Object::Mesh { material, .. }
+            | Object::Revolution { material, .. } => Some(*material),
+            Object::Group(_) | Object::Transform { .. } => None,
+        }
+    }
+
     /// Calls `visit` on every leaf (non-group, non-transform) node.
     pub fn for_each_leaf(&self, visit: &mut impl FnMut(&Object)) {
         match self {

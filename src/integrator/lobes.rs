@@ -1,0 +1,97 @@
+//! The lobes of the rates material, shared by both integrators: which lobe a
+//! vertex scatters into (chosen by rate), the PA1 lights of its diffuse part,
+//! and smallpt's glass.
+
+use crate::color::Color;
+use crate::math::{Ray, Vec3};
+use crate::sampler::Sampler;
+use crate::sampling::dielectric;
+use crate::scene::model::Material;
+use crate::shading::Shading;
+
+use super::{SceneView, lights};
+
+/// Diffuse rates at or below this are ignored (the original's threshold).
+pub const MIN_DIFFUSE_RATE: f64 = 1e-4;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lobe {
+    Diffuse,
+    Mirror,
+    Glass,
+}
+
+/// The lobe weights of a material, as the original reads them.
+#[derive(Clone, Copy, Debug)]
+pub struct Lobes {
+    pub diffuse: f64,
+    pub specular: f64,
+    pub refract: f64,
+}
+
+impl Lobes {
+    pub fn of(material: &Material) -> Lobes {
+        Lobes {
+            diffuse: if material.diffuse > MIN_DIFFUSE_RATE {
+                material.diffuse
+            } else {
+                0.0
+            },
+            specular: material.specular.max(0.0),
+            refract: material.refract.max(0.0),
+        }
+    }
+
+    /// Sum of the weights (1 for normalised materials).
+    pub fn total(&self) -> f64 {
+        self.diffuse + self.specular + self.refract
+    }
+
+    /// One lobe, with probability weight / total; `u` in [0, 1). Weight and
+    /// probability cancel but for `total`, which the caller multiplies in.
+    pub fn pick(&self, u: f64) -> Lobe {
+        let pick = u * self.total();
+        if pick < self.diffuse {
+            Lobe::Diffuse
+        } else if pick < self.diffuse + self.specular {
+            Lobe::Mirror
+        } else {
+            Lobe::Glass
+        }
+    }
+}
+
+/// Radiance of the PA1 point and directional lights at this vertex, weighted
+/// by the diffuse rate (the caller multiplies by the throughput).
+pub fn pa1_lights(view: &SceneView, at: &Shading, lobes: &Lobes) -> Color {
+    if lobes.diffuse > 0.0 && !view.direct_lights.is_empty() {
+        lights::direct(view.world, view.direct_lights, at) * lobes.diffuse
+    } else {
+        Color::BLACK
+    }
+}
+
+/// The glass lobe: smallpt's Russian roulette between reflection and
+/// refraction (reflection only under total internal reflection), with its
+/// weight folded into `throughput`.
+pub fn glass_direction(
+    ray: &Ray,
+    at: &Shading,
+    sampler: &mut Sampler,
+    throughput: &mut Color,
+) -> Vec3 {
+    let glass = dielectric(&ray.direction, &at.normal, at.entering, at.material.ior);
+    match glass.refracted {
+        None => glass.reflected,
+        Some(refracted) => {
+            let p = 0.25 + 0.5 * glass.reflectance;
+            if sampler.next_f64() < p {
+                *throughput *= glass.reflectance / p;
+                glass.reflected
+            } else {
+                *throughput *= (1.0 - glass.reflectance) / (1.0 - p);
+                refracted
+            }
+        }
+    }
+}
