@@ -23,7 +23,18 @@ How the estimators are matched:
 - BSDFs two-sided (ours shades with the normal facing the ray); diffuse ->
   diffuse, mirror -> conductor 'none', mixtures -> blendbsdf by the rates,
   glass -> dielectric (ours uses Schlick's Fresnel: glass differs slightly);
-- film: box filter (ours: 2x2 sub-pixel tent), so edges differ slightly.
+- film: box filter (ours: 2x2 sub-pixel tent), so edges differ slightly;
+- depth of field -> thinlens (focal plane at focusDistance along the view
+  direction, uniform disk of radius interfereRatio, rays start at near_clip =
+  canvasDistance, as ours);
+- approximations, each warned at run time: textures become the flat colour x
+  the image's mean texel; moving spheres (`motion`) are frozen at mid-shutter
+  (Mitsuba 3 shapes have no motion blur); PA1 Lights are ignored (ours ignores
+  them too when the scene has emitters);
+- the Cambrian dialect (`PhongMaterial { type DIFF|SPEC|REFR ... refractive_rate }`,
+  horizontal `angle`) is detected or forced with --dialect.
+scripts/mitsuba_converge.py draws Mitsuba's error-against-time curve with this
+translator, in the CSV format of `pathtracer converge`.
 Keep emitters clear of other surfaces: Mitsuba ends shadow rays ~1e-3 of their
 length short of the light, so smallpt's radius-600 light grazing the ceiling
 leaks through it (Mitsuba +13% on the floor below it, ours matches the exact
@@ -180,7 +191,10 @@ CAMERA_FIELDS = {"center": 3, "direction": 3, "up": 3, "width": 1, "height": 1, 
                  "canvasDistance": 1, "focusDistance": 1, "interfereRatio": 1}
 MATERIAL_FIELDS = {"color": 3, "diffuseColor": 3, "emission": 3, "diffusionRate": 1,
                    "specularRate": 1, "refractRate": 1, "refractiveIndex": 1, "texture": "word",
-                   "specularColor": 3, "shininess": 1}
+                   "specularColor": 3, "shininess": 1,
+                   # Cambrian (cam) dialect: `type DIFF|SPEC|REFR`, IOR `refractive_rate`
+                   "type": "word", "refractive_rate": 1, "texture_file": "word"}
+CAMBRIAN_TYPES = {"DIFF": (1.0, 0.0, 0.0), "SPEC": (0.0, 1.0, 0.0), "REFR": (0.0, 0.0, 1.0)}
 
 
 def resolve_path(relative, scene_path):
@@ -231,10 +245,16 @@ def frame_matrix(normal):
 
 
 class Scene:
-    """The parts of a canonical scene that the cross-check needs."""
+    """The parts of a canonical scene that the cross-check needs.
 
-    def __init__(self, path):
+    Also reads the Cambrian (cam) dialect of docs/scene-format.md Part 2:
+    `PhongMaterial { type DIFF|SPEC|REFR color emission refractive_rate }`,
+    Sphere `motion`, and `angle` as a HORIZONTAL field of view. The dialect is
+    detected from a word-valued material `type` or a `refractive_rate`."""
+
+    def __init__(self, path, dialect="auto"):
         self.path = path
+        self.dialect = dialect
         with open(path, encoding="utf-8", errors="replace") as f:
             top = parse_blocks(tokenize(f.read()))
         self.camera = None
@@ -242,6 +262,8 @@ class Scene:
         self.materials = []
         self.shapes = []  # dicts: kind, material, matrix, + shape fields
         self.current_material = 0
+        self.cambrian_seen = False
+        self.has_lights = False
         for item in top:
             if not isinstance(item, Block):
                 warn(f"stray top-level word '{item}' skipped")
@@ -256,11 +278,19 @@ class Scene:
             elif item.name == "Group":
                 self.read_group(item, np.eye(4))
             elif item.name == "Lights":
-                warn("Lights (PA1 point/directional lights) are not translated")
+                self.has_lights = True
             else:
                 warn(f"top-level block '{item.name}' skipped")
         if self.camera is None:
             raise SystemExit(f"{path}: no PerspectiveCamera")
+        if self.dialect == "auto":
+            self.dialect = "cambrian" if self.cambrian_seen else "canonical"
+        if self.has_lights:
+            if any(max(m["emission"]) > 0 for m in self.materials):
+                warn("Lights ignored (as ours does: a scene with emissive materials is lit "
+                     "by its emitters alone)")
+            else:
+                warn("Lights (PA1 point/directional lights) are not translated")
 
     def read_materials(self, block):
         for item in block.items:
@@ -273,14 +303,28 @@ class Scene:
             specular = f.get("specularRate", [0.0])[0]
             refract = f.get("refractRate", [0.0])[0]
             diffuse = f.get("diffusionRate", [1.0 - specular - refract])[0]
+            ior = f.get("refractiveIndex", [1.5])[0]
+            if "type" in f or "refractive_rate" in f:  # Cambrian material
+                self.cambrian_seen = True
+                kind = f.get("type", "DIFF")
+                if kind not in CAMBRIAN_TYPES:
+                    warn(f"material type '{kind}' not DIFF/SPEC/REFR: read as DIFF")
+                    kind = "DIFF"
+                diffuse, specular, refract = CAMBRIAN_TYPES[kind]
+                ior = f.get("refractive_rate", [ior])[0]
             if abs(diffuse + specular + refract - 1.0) > 1e-6:
                 raise SystemExit(f"{self.path}: material rates do not sum to 1")
-            if "texture" in f:
-                warn(f"texture '{f['texture']}' ignored: Mitsuba gets the flat colour")
+            texture = f.get("texture", f.get("texture_file"))
+            if texture is not None:
+                try:
+                    texture = resolve_path(texture, self.path)
+                except SystemExit as error:
+                    warn(f"{error}: texture ignored")
+                    texture = None
             self.materials.append({
                 "color": color, "emission": f.get("emission", [0.0, 0.0, 0.0]),
                 "diffuse": diffuse, "specular": specular, "refract": refract,
-                "ior": f.get("refractiveIndex", [1.5])[0]})
+                "ior": ior, "texture": texture})
 
     def add(self, kind, matrix, **fields):
         if not 0 <= self.current_material < len(self.materials):
@@ -304,8 +348,16 @@ class Scene:
         if name == "Group":
             self.read_group(block, matrix)
         elif name == "Sphere":
-            f = read_fields(block, {"center": 3, "radius": 1})
-            self.add("sphere", matrix, center=f.get("center", [0, 0, 0]),
+            f = read_fields(block, {"center": 3, "radius": 1, "motion": 3})
+            center = np.array(f.get("center", [0, 0, 0]), float)
+            motion = np.array(f.get("motion", [0, 0, 0]), float)
+            if np.any(motion != 0):
+                # Mitsuba 3 shapes have no motion blur (ray time is ignored by
+                # shapes): the sphere is frozen at mid-shutter, center + motion/2.
+                warn(f"Sphere motion {motion.tolist()}: no motion blur in Mitsuba 3, sphere "
+                     f"frozen at its mid-shutter position {(center + motion / 2).tolist()}")
+                center = center + motion / 2
+            self.add("sphere", matrix, center=center.tolist(),
                      radius=f.get("radius", [1.0])[0])
         elif name == "Plane":
             f = read_fields(block, {"normal": 3, "offset": 1, "d": 1})
@@ -393,6 +445,44 @@ def mitsuba_bsdf(material):
     return {"type": "twosided", "bsdf": bsdf}
 
 
+def texture_mean(mi, path):
+    """Mean texel of an image as ours reads it: bytes / 255, no gamma."""
+    if path.lower().endswith(".bmp"):
+        mean = bmp_mean(path)
+        if mean is not None:
+            return mean
+    bitmap = mi.Bitmap(path)
+    pixels = np.array(bitmap, dtype=np.float64)
+    if pixels.ndim == 2:
+        pixels = pixels[..., None]
+    if bitmap.component_format() == mi.Struct.Type.UInt8:
+        pixels = pixels / 255.0
+    elif bitmap.component_format() == mi.Struct.Type.UInt16:
+        pixels = pixels / 65535.0
+    mean = pixels.reshape(-1, pixels.shape[-1]).mean(axis=0)
+    if mean.size == 1:
+        mean = np.repeat(mean, 3)
+    return [float(v) for v in mean[:3]]
+
+
+def bmp_mean(path):
+    """Mean RGB of an uncompressed 24/32-bit BMP (Mitsuba's reader refuses
+    BITMAPV5 headers); None for other kinds."""
+    import struct
+    with open(path, "rb") as f:
+        data = f.read()
+    offset = struct.unpack("<I", data[10:14])[0]
+    width, height, _, bits, compression = struct.unpack("<iiHHI", data[18:34])
+    if bits not in (24, 32) or compression not in (0, 3):
+        return None
+    channels = bits // 8
+    stride = (width * channels + 3) // 4 * 4
+    rows = np.frombuffer(data, np.uint8, count=stride * abs(height), offset=offset)
+    pixels = rows.reshape(abs(height), stride)[:, :width * channels].reshape(-1, channels)
+    bgr = pixels[:, :3].astype(np.float64).mean(axis=0) / 255.0
+    return [float(bgr[2]), float(bgr[1]), float(bgr[0])]
+
+
 def camera_frame(camera):
     center = np.array(camera.get("center", [0, 0, 0]), float)
     direction = np.array(camera.get("direction", [0, 0, -1]), float)
@@ -404,14 +494,29 @@ def camera_frame(camera):
 def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
     camera = scene.camera
     center, direction, up = camera_frame(camera)
+    fov_axis = "y"
     if "angle" in camera:
         fov = camera["angle"][0]
+        if scene.dialect == "cambrian":
+            fov_axis = "x"  # the Cambrian dialect's angle is horizontal
     else:
         fov = math.degrees(2.0 * math.atan(ORIGINAL_PLANE_SCALE / 2.0))
     canvas = camera.get("canvasDistance", [0.0])[0]
-    if camera.get("interfereRatio", [0.0])[0] >= 1e-4:
-        warn("depth of field (interfereRatio) ignored: pinhole in both renders is not "
-             "guaranteed; ours will still use its lens")
+    lens_radius = camera.get("interfereRatio", [0.0])[0]
+    sensor_type = "perspective"
+    lens = {}
+    if lens_radius >= 1e-4:
+        # Ours: focus point F = center + d * focusDistance with d . direction = 1,
+        # i.e. a focal PLANE at focusDistance along the view direction; the lens
+        # is sampled uniformly on a disk of radius interfereRatio (concentric
+        # map); rays start on the plane at canvasDistance from the lens plane.
+        # Mitsuba's thinlens: focal plane at camera-space z = focus_distance,
+        # uniform (concentric) disk of aperture_radius, ray starts at z = near_clip.
+        if "focusDistance" not in camera:
+            warn("depth of field without focusDistance: focus_distance 1 assumed")
+        sensor_type = "thinlens"
+        lens = {"aperture_radius": float(lens_radius),
+                "focus_distance": float(camera.get("focusDistance", [1.0])[0])}
     if any(c > 0 for c in scene.background):
         warn("non-black Background: ours shows it to camera rays only; Mitsuba gets black")
     T = mi.ScalarTransform4f
@@ -419,11 +524,12 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
         "type": "scene",
         "integrator": {"type": "path", "max_depth": 6, "rr_depth": 100, "hide_emitters": False},
         "sensor": {
-            "type": "perspective",
+            "type": sensor_type,
             "to_world": T().look_at(origin=center.tolist(), target=(center + direction).tolist(),
                                     up=up.tolist()),
             "fov": float(fov),
-            "fov_axis": "y",
+            "fov_axis": fov_axis,
+            **lens,
             "near_clip": float(canvas) if canvas > 1e-4 else 1e-4,
             "far_clip": 1e7,
             "film": {"type": "hdrfilm", "width": args.width, "height": args.height,
@@ -432,8 +538,30 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
             "sampler": {"type": "independent", "sample_count": spp},
         },
     }
+    if any(m["refract"] > 0 for m in scene.materials):
+        warn("glass: Mitsuba's dielectric uses the exact Fresnel equations, ours Schlick's "
+             "approximation (and smallpt's roulette): glass differs slightly")
+    planes = [(np.array(s["normal"], float), s["offset"]) for s in scene.shapes
+              if s["kind"] == "plane" and np.allclose(s["matrix"], np.eye(4))]
+    for s in scene.shapes:
+        if (s["kind"] == "sphere" and max(scene.materials[s["material"]]["emission"]) > 0
+                and np.allclose(s["matrix"], np.eye(4))):
+            for n, offset in planes:
+                gap = abs(np.dot(n, s["center"]) - offset) / np.linalg.norm(n) - s["radius"]
+                if abs(gap) < 0.1 * s["radius"]:  # a cap through (or grazing) the plane
+                    warn(f"emissive sphere at {list(s['center'])} r {s['radius']} "
+                         f"{'crosses' if gap < 0 else 'grazes'} plane n={n.tolist()} "
+                         f"d={offset} (gap {gap:.3g}): Mitsuba's shadow-ray epsilon leaks "
+                         "its light past the plane (brighter than ours nearby)")
+    flat = {}
+    for index, material in enumerate(scene.materials):
+        if material.get("texture"):
+            mean = texture_mean(mi, material["texture"])
+            flat[index] = dict(material, color=[c * m for c, m in zip(material["color"], mean)])
+            warn(f"texture {os.path.relpath(material['texture'])} not mapped: Mitsuba gets the "
+                 f"flat colour x the texture's mean texel {[round(v, 4) for v in mean]}")
     for index, shape in enumerate(scene.shapes):
-        material = scene.materials[shape["material"]]
+        material = flat.get(shape["material"], scene.materials[shape["material"]])
         matrix = shape["matrix"]
         kind = shape["kind"]
         if kind == "sphere":
@@ -624,6 +752,7 @@ def main():
                              "scalar_rgb, 64 for llvm_ad_rgb)")
     parser.add_argument("--out", default="output/crosscheck")
     parser.add_argument("--mitsuba-only", action="store_true", help="skip our renderer")
+    parser.add_argument("--dialect", default="auto", choices=["auto", "canonical", "cambrian"])
     parser.add_argument("--tolerance", type=float, default=0.03,
                         help="largest accepted |mean ratio - 1| per channel")
     args = parser.parse_args()
@@ -642,7 +771,7 @@ def main():
     if args.pass_spp is None:
         args.pass_spp = 64 if args.variant.startswith("llvm") else max(args.spp, args.reference_spp)
 
-    scene = Scene(args.scene)
+    scene = Scene(args.scene, dialect=args.dialect)
     tmpdir = os.path.join(args.out, "mitsuba_inputs")
     os.makedirs(tmpdir, exist_ok=True)
     scene_dict = mitsuba_scene_dict(mi, scene, args, args.spp, os.path.abspath(tmpdir))
