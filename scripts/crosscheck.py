@@ -27,8 +27,13 @@ How the estimators are matched:
 - depth of field -> thinlens (focal plane at focusDistance along the view
   direction, uniform disk of radius interfereRatio, rays start at near_clip =
   canvasDistance, as ours);
-- approximations, each warned at run time: textures become the flat colour x
-  the image's mean texel; moving spheres (`motion`) are frozen at mid-shutter
+- textures on spheres and planes: a nearest-texel, repeating, raw bitmap with
+  our uv maps (sphere rotated so that Mitsuba's uv equals ours; plane rectangle
+  in our orthonormal_basis frame with a to_uv giving 10 texels per unit),
+  checked texel for texel against ours from Mitsuba's position AOV;
+- approximations, each warned at run time: textures on other shapes (or all,
+  with --flat-textures) become the flat mean texel; moving spheres (`motion`)
+  are frozen at mid-shutter
   (Mitsuba 3 shapes have no motion blur); PA1 Lights are ignored (ours ignores
   them too when the scene has emitters);
 - the Cambrian dialect (`PhongMaterial { type DIFF|SPEC|REFR ... refractive_rate }`,
@@ -60,6 +65,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RELATIVE_MSE_EPSILON = 1e-2  # as src/metrics.rs
 ORIGINAL_PLANE_SCALE = 0.5135  # the original's image-plane height at distance 1
 PLANE_HALF_SIZE = 1e4
+PLANE_TEXELS_PER_UNIT = 10.0  # as src/geometry/plane.rs
 WARNINGS = []
 
 
@@ -418,20 +424,23 @@ def rgb(value):
     return {"type": "rgb", "value": [float(v) for v in value]}
 
 
-def mitsuba_bsdf(material):
+def mitsuba_bsdf(material, texture=None):
+    """`texture`: a Mitsuba texture dict replacing the colour (ours: a textured
+    material's object colour is the texel, for every lobe)."""
     color = material["color"]
+    spec = texture if texture is not None else rgb(color)
     lobes = []
     if material["diffuse"] > 0:
-        lobes.append((material["diffuse"], {"type": "diffuse", "reflectance": rgb(color)}))
+        lobes.append((material["diffuse"], {"type": "diffuse", "reflectance": spec}))
     if material["specular"] > 0:
         lobes.append((material["specular"], {"type": "conductor", "material": "none",
-                                             "specular_reflectance": rgb(color)}))
+                                             "specular_reflectance": spec}))
     if material["refract"] > 0:
         lobes.append((material["refract"], {"type": "dielectric",
                                             "int_ior": float(material["ior"]), "ext_ior": 1.0,
-                                            "specular_reflectance": rgb(color),
-                                            "specular_transmittance": rgb(color)}))
-    if max(color) <= 0 or not lobes:  # ours terminates on a black colour
+                                            "specular_reflectance": spec,
+                                            "specular_transmittance": spec}))
+    if (texture is None and max(color) <= 0) or not lobes:  # ours stops on a black colour
         return {"type": "diffuse", "reflectance": rgb([0, 0, 0])}
     weight, bsdf = lobes[0]
     for w, other in lobes[1:]:
@@ -445,29 +454,60 @@ def mitsuba_bsdf(material):
     return {"type": "twosided", "bsdf": bsdf}
 
 
+def texture_pixels(mi, path):
+    """An image as ours reads it: (H, W, 3) float, top row first, bytes / 255,
+    no gamma."""
+    pixels = bmp_pixels(path) if path.lower().endswith(".bmp") else None
+    if pixels is None:
+        bitmap = mi.Bitmap(path)
+        pixels = np.array(bitmap, dtype=np.float64)
+        if pixels.ndim == 2:
+            pixels = pixels[..., None]
+        if bitmap.component_format() == mi.Struct.Type.UInt8:
+            pixels = pixels / 255.0
+        elif bitmap.component_format() == mi.Struct.Type.UInt16:
+            pixels = pixels / 65535.0
+        if pixels.shape[2] < 3:
+            pixels = np.repeat(pixels[..., :1], 3, axis=2)
+    return np.ascontiguousarray(pixels[..., :3], dtype=np.float32)
+
+
 def texture_mean(mi, path):
-    """Mean texel of an image as ours reads it: bytes / 255, no gamma."""
-    if path.lower().endswith(".bmp"):
-        mean = bmp_mean(path)
-        if mean is not None:
-            return mean
-    bitmap = mi.Bitmap(path)
-    pixels = np.array(bitmap, dtype=np.float64)
-    if pixels.ndim == 2:
-        pixels = pixels[..., None]
-    if bitmap.component_format() == mi.Struct.Type.UInt8:
-        pixels = pixels / 255.0
-    elif bitmap.component_format() == mi.Struct.Type.UInt16:
-        pixels = pixels / 65535.0
-    mean = pixels.reshape(-1, pixels.shape[-1]).mean(axis=0)
-    if mean.size == 1:
-        mean = np.repeat(mean, 3)
-    return [float(v) for v in mean[:3]]
+    """Mean texel of an image as ours reads it."""
+    mean = texture_pixels(mi, path).reshape(-1, 3).astype(np.float64).mean(axis=0)
+    return [float(v) for v in mean]
 
 
-def bmp_mean(path):
-    """Mean RGB of an uncompressed 24/32-bit BMP (Mitsuba's reader refuses
-    BITMAPV5 headers); None for other kinds."""
+def bitmap_texture(mi, pixels, to_uv=None):
+    """Nearest-texel, repeating, raw (no gamma) bitmap. Mitsuba reads data row
+    floor(v * H) and column floor(u * W) (row 0 at v = 0), checked in a test."""
+    texture = {"type": "bitmap", "bitmap": mi.Bitmap(pixels), "filter_type": "nearest",
+               "wrap_mode": "repeat", "raw": True}
+    if to_uv is not None:
+        texture["to_uv"] = mi.ScalarTransform4f(to_uv.tolist())
+    return texture
+
+
+def orthonormal_basis(n):
+    """As src/math.rs (Duff et al. 2017): the frame of our plane textures."""
+    sign = math.copysign(1.0, n[2])
+    a = -1.0 / (sign + n[2])
+    b = n[0] * n[1] * a
+    return (np.array([1.0 + sign * n[0] * n[0] * a, sign * b, -sign * n[0]]),
+            np.array([b, sign + n[1] * n[1] * a, -n[1]]))
+
+
+# Our sphere uv: u = 0.5 - atan2(w.z, w.x)/(2 pi), texel row (from the top)
+# floor(acos(w.y)/pi * H). Mitsuba's sphere: u = atan2(l.y, l.x)/(2 pi) mod 1,
+# v = acos(l.z)/pi. With local l = (-w.x, w.z, w.y) the two agree; this is the
+# rotation taking l to w.
+SPHERE_UV_ROTATION = np.array([[-1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0],
+                               [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+
+
+def bmp_pixels(path):
+    """An uncompressed 24/32-bit BMP as (H, W, 3) in [0, 1], top row first
+    (Mitsuba's reader refuses BITMAPV5 headers); None for other kinds."""
     import struct
     with open(path, "rb") as f:
         data = f.read()
@@ -478,9 +518,11 @@ def bmp_mean(path):
     channels = bits // 8
     stride = (width * channels + 3) // 4 * 4
     rows = np.frombuffer(data, np.uint8, count=stride * abs(height), offset=offset)
-    pixels = rows.reshape(abs(height), stride)[:, :width * channels].reshape(-1, channels)
-    bgr = pixels[:, :3].astype(np.float64).mean(axis=0) / 255.0
-    return [float(bgr[2]), float(bgr[1]), float(bgr[0])]
+    pixels = rows.reshape(abs(height), stride)[:, :width * channels].reshape(
+        abs(height), width, channels)
+    if height > 0:  # stored bottom-up
+        pixels = pixels[::-1]
+    return pixels[..., 2::-1].astype(np.float64) / 255.0
 
 
 def camera_frame(camera):
@@ -553,29 +595,41 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
                          f"{'crosses' if gap < 0 else 'grazes'} plane n={n.tolist()} "
                          f"d={offset} (gap {gap:.3g}): Mitsuba's shadow-ray epsilon leaks "
                          "its light past the plane (brighter than ours nearby)")
-    flat = {}
-    for index, material in enumerate(scene.materials):
-        if material.get("texture"):
-            mean = texture_mean(mi, material["texture"])
-            flat[index] = dict(material, color=[c * m for c, m in zip(material["color"], mean)])
-            warn(f"texture {os.path.relpath(material['texture'])} not mapped: Mitsuba gets the "
-                 f"flat colour x the texture's mean texel {[round(v, 4) for v in mean]}")
+    images = {}
     for index, shape in enumerate(scene.shapes):
-        material = flat.get(shape["material"], scene.materials[shape["material"]])
+        material = scene.materials[shape["material"]]
         matrix = shape["matrix"]
         kind = shape["kind"]
+        texture = None
+        pixels = None
+        uv_rotation = np.eye(4)
+        if material.get("texture"):
+            path = material["texture"]
+            if path not in images:
+                images[path] = texture_pixels(mi, path)
+            pixels = images[path]
+            if getattr(args, "flat_textures", False) or kind not in ("sphere", "plane"):
+                mean = pixels.reshape(-1, 3).astype(np.float64).mean(axis=0)
+                # ours: the texel replaces the colour
+                material = dict(material, color=[float(v) for v in mean], texture=None)
+                warn(f"texture {os.path.relpath(path)} on a {kind}: not mapped, Mitsuba gets "
+                     f"the flat mean texel {[round(v, 4) for v in mean]}")
+            elif kind == "sphere":
+                texture = bitmap_texture(mi, pixels)
+                uv_rotation = SPHERE_UV_ROTATION
         if kind == "sphere":
             linear = matrix[:3, :3]
             singular = np.linalg.svd(linear, compute_uv=False)
             if singular.max() - singular.min() > 1e-6 * singular.max():
                 warn("sphere under a non-uniform scale: Mitsuba's sphere cannot follow it")
-            if np.allclose(matrix, np.eye(4)):
+            if np.allclose(matrix, np.eye(4)) and texture is None:
                 entry = {"type": "sphere", "center": [float(v) for v in shape["center"]],
                          "radius": float(shape["radius"])}
             else:
                 r = shape["radius"]
                 entry = {"type": "sphere", "to_world": T(
-                    (matrix @ translate(shape["center"]) @ scale([r, r, r])).tolist())}
+                    (matrix @ translate(shape["center"]) @ uv_rotation
+                     @ scale([r, r, r])).tolist())}
         elif kind == "plane":
             n = np.array(shape["normal"], float)
             length = np.linalg.norm(n)
@@ -584,6 +638,24 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
             point = center - unit * (np.dot(unit, center) - shape["offset"] / length)
             local = translate(point) @ frame_matrix(n) @ scale(
                 [PLANE_HALF_SIZE, PLANE_HALF_SIZE, 1.0])
+            if material.get("texture"):
+                # Ours: texel column floor(x) mod W, row (from the top) floor(-y) mod H,
+                # x = 10 p.e1, y = 10 p.e2 (e1, e2 from orthonormal_basis(n)). The
+                # rectangle spans point + S (lx e1 + ly e2), lx = 2u - 1, ly = 2v - 1
+                # (Mitsuba's uv), so Mitsuba's (s, t) = (x / W, -y / H) is affine in uv.
+                e1, e2 = orthonormal_basis(unit)
+                rotation = np.eye(4)
+                rotation[:3, 0], rotation[:3, 1], rotation[:3, 2] = e1, e2, unit
+                half = PLANE_HALF_SIZE
+                local = translate(point) @ rotation @ scale([half, half, 1.0])
+                h, w = pixels.shape[:2]
+                tiling = PLANE_TEXELS_PER_UNIT
+                to_uv = np.eye(4)
+                to_uv[0, 0] = 2 * half * tiling / w
+                to_uv[0, 3] = math.fmod(tiling * (np.dot(point, e1) - half) / w, 1.0)
+                to_uv[1, 1] = -2 * half * tiling / h
+                to_uv[1, 3] = math.fmod(-tiling * (np.dot(point, e2) - half) / h, 1.0)
+                texture = bitmap_texture(mi, pixels, to_uv)
             entry = {"type": "rectangle", "to_world": T((matrix @ local).tolist())}
             if max(material["emission"]) > 0:
                 warn("emissive Plane: Mitsuba's area emitter is one-sided (along the normal), "
@@ -601,7 +673,7 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
                      "to_world": T(matrix.tolist())}
         else:
             continue
-        entry["bsdf"] = mitsuba_bsdf(material)
+        entry["bsdf"] = mitsuba_bsdf(material, texture)
         if max(material["emission"]) > 0:
             entry["emitter"] = {"type": "area", "radiance": rgb(material["emission"])}
         d[f"shape_{index:03d}_{kind}"] = entry
@@ -753,6 +825,8 @@ def main():
     parser.add_argument("--out", default="output/crosscheck")
     parser.add_argument("--mitsuba-only", action="store_true", help="skip our renderer")
     parser.add_argument("--dialect", default="auto", choices=["auto", "canonical", "cambrian"])
+    parser.add_argument("--flat-textures", action="store_true",
+                        help="give textured materials their mean texel instead of the map")
     parser.add_argument("--tolerance", type=float, default=0.03,
                         help="largest accepted |mean ratio - 1| per channel")
     args = parser.parse_args()

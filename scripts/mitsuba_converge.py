@@ -6,7 +6,7 @@
     scripts/mitsuba_converge.py --scene SCENE [--variant llvm_ad_rgb]
         [--width 256 --height 192] [--max-spp 256] [--reference-spp 4096]
         [--reference PFM] [--our-reference PFM] [--pass-spp 64] [--seed 1]
-        [--dialect auto|canonical|cambrian] [--repeats 1] [--no-ssim]
+        [--dialect auto|canonical|cambrian] [--repeats 1] [--flat-textures] [--no-ssim]
         [--out output/curves/NAME]
 
 The scene is translated by scripts/crosscheck.py (its warnings list what could
@@ -105,6 +105,8 @@ def main():
     parser.add_argument("--repeats", type=int, default=1,
                         help="time each level this many times (same seeds) and keep the "
                              "fastest: the machine may be shared")
+    parser.add_argument("--flat-textures", action="store_true",
+                        help="give textured materials their mean texel instead of the map")
     parser.add_argument("--no-ssim", action="store_true")
     parser.add_argument("--out", default=None, help="default output/curves/<scene name>")
     args = parser.parse_args()
