@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench converge crosscheck clean
+.PHONY: build render test lint bench converge crosscheck mitsuba-converge clean
 
 build:
 	$(CARGO) build --release
@@ -36,6 +36,12 @@ crosscheck: build
 	python3 -m venv $(VENV)
 	$(VENV)/bin/pip install -q mitsuba numpy
 	$(VENV)/bin/python scripts/crosscheck.py --variant $(VARIANT)
+
+# Mitsuba's error-against-time curve (same CSV as `make converge`), into
+# output/curves/<scene>/ (venv from `make crosscheck`):
+# make mitsuba-converge SCENE=... [VARIANT=llvm_ad_rgb]
+mitsuba-converge:
+	$(VENV)/bin/python scripts/mitsuba_converge.py --scene $(SCENE) --variant $(VARIANT)
 
 clean:
 	$(CARGO) clean

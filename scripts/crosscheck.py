@@ -23,7 +23,23 @@ How the estimators are matched:
 - BSDFs two-sided (ours shades with the normal facing the ray); diffuse ->
   diffuse, mirror -> conductor 'none', mixtures -> blendbsdf by the rates,
   glass -> dielectric (ours uses Schlick's Fresnel: glass differs slightly);
-- film: box filter (ours: 2x2 sub-pixel tent), so edges differ slightly.
+- film: box filter (ours: 2x2 sub-pixel tent), so edges differ slightly;
+- depth of field -> thinlens (focal plane at focusDistance along the view
+  direction, uniform disk of radius interfereRatio, rays start at near_clip =
+  canvasDistance, as ours);
+- textures on spheres and planes: a nearest-texel, repeating, raw bitmap with
+  our uv maps (sphere rotated so that Mitsuba's uv equals ours; plane rectangle
+  in our orthonormal_basis frame with a to_uv giving 10 texels per unit),
+  checked texel for texel against ours from Mitsuba's position AOV;
+- approximations, each warned at run time: textures on other shapes (or all,
+  with --flat-textures) become the flat mean texel; moving spheres (`motion`)
+  are frozen at mid-shutter
+  (Mitsuba 3 shapes have no motion blur); PA1 Lights are ignored (ours ignores
+  them too when the scene has emitters);
+- the Cambrian dialect (`PhongMaterial { type DIFF|SPEC|REFR ... refractive_rate }`,
+  horizontal `angle`) is detected or forced with --dialect.
+scripts/mitsuba_converge.py draws Mitsuba's error-against-time curve with this
+translator, in the CSV format of `pathtracer converge`.
 Keep emitters clear of other surfaces: Mitsuba ends shadow rays ~1e-3 of their
 length short of the light, so smallpt's radius-600 light grazing the ceiling
 leaks through it (Mitsuba +13% on the floor below it, ours matches the exact
@@ -49,6 +65,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RELATIVE_MSE_EPSILON = 1e-2  # as src/metrics.rs
 ORIGINAL_PLANE_SCALE = 0.5135  # the original's image-plane height at distance 1
 PLANE_HALF_SIZE = 1e4
+PLANE_TEXELS_PER_UNIT = 10.0  # as src/geometry/plane.rs
 WARNINGS = []
 
 
@@ -180,7 +197,10 @@ CAMERA_FIELDS = {"center": 3, "direction": 3, "up": 3, "width": 1, "height": 1, 
                  "canvasDistance": 1, "focusDistance": 1, "interfereRatio": 1}
 MATERIAL_FIELDS = {"color": 3, "diffuseColor": 3, "emission": 3, "diffusionRate": 1,
                    "specularRate": 1, "refractRate": 1, "refractiveIndex": 1, "texture": "word",
-                   "specularColor": 3, "shininess": 1}
+                   "specularColor": 3, "shininess": 1,
+                   # Cambrian (cam) dialect: `type DIFF|SPEC|REFR`, IOR `refractive_rate`
+                   "type": "word", "refractive_rate": 1, "texture_file": "word"}
+CAMBRIAN_TYPES = {"DIFF": (1.0, 0.0, 0.0), "SPEC": (0.0, 1.0, 0.0), "REFR": (0.0, 0.0, 1.0)}
 
 
 def resolve_path(relative, scene_path):
@@ -231,10 +251,16 @@ def frame_matrix(normal):
 
 
 class Scene:
-    """The parts of a canonical scene that the cross-check needs."""
+    """The parts of a canonical scene that the cross-check needs.
 
-    def __init__(self, path):
+    Also reads the Cambrian (cam) dialect of docs/scene-format.md Part 2:
+    `PhongMaterial { type DIFF|SPEC|REFR color emission refractive_rate }`,
+    Sphere `motion`, and `angle` as a HORIZONTAL field of view. The dialect is
+    detected from a word-valued material `type` or a `refractive_rate`."""
+
+    def __init__(self, path, dialect="auto"):
         self.path = path
+        self.dialect = dialect
         with open(path, encoding="utf-8", errors="replace") as f:
             top = parse_blocks(tokenize(f.read()))
         self.camera = None
@@ -242,6 +268,8 @@ class Scene:
         self.materials = []
         self.shapes = []  # dicts: kind, material, matrix, + shape fields
         self.current_material = 0
+        self.cambrian_seen = False
+        self.has_lights = False
         for item in top:
             if not isinstance(item, Block):
                 warn(f"stray top-level word '{item}' skipped")
@@ -256,11 +284,19 @@ class Scene:
             elif item.name == "Group":
                 self.read_group(item, np.eye(4))
             elif item.name == "Lights":
-                warn("Lights (PA1 point/directional lights) are not translated")
+                self.has_lights = True
             else:
                 warn(f"top-level block '{item.name}' skipped")
         if self.camera is None:
             raise SystemExit(f"{path}: no PerspectiveCamera")
+        if self.dialect == "auto":
+            self.dialect = "cambrian" if self.cambrian_seen else "canonical"
+        if self.has_lights:
+            if any(max(m["emission"]) > 0 for m in self.materials):
+                warn("Lights ignored (as ours does: a scene with emissive materials is lit "
+                     "by its emitters alone)")
+            else:
+                warn("Lights (PA1 point/directional lights) are not translated")
 
     def read_materials(self, block):
         for item in block.items:
@@ -273,14 +309,28 @@ class Scene:
             specular = f.get("specularRate", [0.0])[0]
             refract = f.get("refractRate", [0.0])[0]
             diffuse = f.get("diffusionRate", [1.0 - specular - refract])[0]
+            ior = f.get("refractiveIndex", [1.5])[0]
+            if "type" in f or "refractive_rate" in f:  # Cambrian material
+                self.cambrian_seen = True
+                kind = f.get("type", "DIFF")
+                if kind not in CAMBRIAN_TYPES:
+                    warn(f"material type '{kind}' not DIFF/SPEC/REFR: read as DIFF")
+                    kind = "DIFF"
+                diffuse, specular, refract = CAMBRIAN_TYPES[kind]
+                ior = f.get("refractive_rate", [ior])[0]
             if abs(diffuse + specular + refract - 1.0) > 1e-6:
                 raise SystemExit(f"{self.path}: material rates do not sum to 1")
-            if "texture" in f:
-                warn(f"texture '{f['texture']}' ignored: Mitsuba gets the flat colour")
+            texture = f.get("texture", f.get("texture_file"))
+            if texture is not None:
+                try:
+                    texture = resolve_path(texture, self.path)
+                except SystemExit as error:
+                    warn(f"{error}: texture ignored")
+                    texture = None
             self.materials.append({
                 "color": color, "emission": f.get("emission", [0.0, 0.0, 0.0]),
                 "diffuse": diffuse, "specular": specular, "refract": refract,
-                "ior": f.get("refractiveIndex", [1.5])[0]})
+                "ior": ior, "texture": texture})
 
     def add(self, kind, matrix, **fields):
         if not 0 <= self.current_material < len(self.materials):
@@ -304,8 +354,16 @@ class Scene:
         if name == "Group":
             self.read_group(block, matrix)
         elif name == "Sphere":
-            f = read_fields(block, {"center": 3, "radius": 1})
-            self.add("sphere", matrix, center=f.get("center", [0, 0, 0]),
+            f = read_fields(block, {"center": 3, "radius": 1, "motion": 3})
+            center = np.array(f.get("center", [0, 0, 0]), float)
+            motion = np.array(f.get("motion", [0, 0, 0]), float)
+            if np.any(motion != 0):
+                # Mitsuba 3 shapes have no motion blur (ray time is ignored by
+                # shapes): the sphere is frozen at mid-shutter, center + motion/2.
+                warn(f"Sphere motion {motion.tolist()}: no motion blur in Mitsuba 3, sphere "
+                     f"frozen at its mid-shutter position {(center + motion / 2).tolist()}")
+                center = center + motion / 2
+            self.add("sphere", matrix, center=center.tolist(),
                      radius=f.get("radius", [1.0])[0])
         elif name == "Plane":
             f = read_fields(block, {"normal": 3, "offset": 1, "d": 1})
@@ -366,20 +424,23 @@ def rgb(value):
     return {"type": "rgb", "value": [float(v) for v in value]}
 
 
-def mitsuba_bsdf(material):
+def mitsuba_bsdf(material, texture=None):
+    """`texture`: a Mitsuba texture dict replacing the colour (ours: a textured
+    material's object colour is the texel, for every lobe)."""
     color = material["color"]
+    spec = texture if texture is not None else rgb(color)
     lobes = []
     if material["diffuse"] > 0:
-        lobes.append((material["diffuse"], {"type": "diffuse", "reflectance": rgb(color)}))
+        lobes.append((material["diffuse"], {"type": "diffuse", "reflectance": spec}))
     if material["specular"] > 0:
         lobes.append((material["specular"], {"type": "conductor", "material": "none",
-                                             "specular_reflectance": rgb(color)}))
+                                             "specular_reflectance": spec}))
     if material["refract"] > 0:
         lobes.append((material["refract"], {"type": "dielectric",
                                             "int_ior": float(material["ior"]), "ext_ior": 1.0,
-                                            "specular_reflectance": rgb(color),
-                                            "specular_transmittance": rgb(color)}))
-    if max(color) <= 0 or not lobes:  # ours terminates on a black colour
+                                            "specular_reflectance": spec,
+                                            "specular_transmittance": spec}))
+    if (texture is None and max(color) <= 0) or not lobes:  # ours stops on a black colour
         return {"type": "diffuse", "reflectance": rgb([0, 0, 0])}
     weight, bsdf = lobes[0]
     for w, other in lobes[1:]:
@@ -393,6 +454,77 @@ def mitsuba_bsdf(material):
     return {"type": "twosided", "bsdf": bsdf}
 
 
+def texture_pixels(mi, path):
+    """An image as ours reads it: (H, W, 3) float, top row first, bytes / 255,
+    no gamma."""
+    pixels = bmp_pixels(path) if path.lower().endswith(".bmp") else None
+    if pixels is None:
+        bitmap = mi.Bitmap(path)
+        pixels = np.array(bitmap, dtype=np.float64)
+        if pixels.ndim == 2:
+            pixels = pixels[..., None]
+        if bitmap.component_format() == mi.Struct.Type.UInt8:
+            pixels = pixels / 255.0
+        elif bitmap.component_format() == mi.Struct.Type.UInt16:
+            pixels = pixels / 65535.0
+        if pixels.shape[2] < 3:
+            pixels = np.repeat(pixels[..., :1], 3, axis=2)
+    return np.ascontiguousarray(pixels[..., :3], dtype=np.float32)
+
+
+def texture_mean(mi, path):
+    """Mean texel of an image as ours reads it."""
+    mean = texture_pixels(mi, path).reshape(-1, 3).astype(np.float64).mean(axis=0)
+    return [float(v) for v in mean]
+
+
+def bitmap_texture(mi, pixels, to_uv=None):
+    """Nearest-texel, repeating, raw (no gamma) bitmap. Mitsuba reads data row
+    floor(v * H) and column floor(u * W) (row 0 at v = 0), checked in a test."""
+    texture = {"type": "bitmap", "bitmap": mi.Bitmap(pixels), "filter_type": "nearest",
+               "wrap_mode": "repeat", "raw": True}
+    if to_uv is not None:
+        texture["to_uv"] = mi.ScalarTransform4f(to_uv.tolist())
+    return texture
+
+
+def orthonormal_basis(n):
+    """As src/math.rs (Duff et al. 2017): the frame of our plane textures."""
+    sign = math.copysign(1.0, n[2])
+    a = -1.0 / (sign + n[2])
+    b = n[0] * n[1] * a
+    return (np.array([1.0 + sign * n[0] * n[0] * a, sign * b, -sign * n[0]]),
+            np.array([b, sign + n[1] * n[1] * a, -n[1]]))
+
+
+# Our sphere uv: u = 0.5 - atan2(w.z, w.x)/(2 pi), texel row (from the top)
+# floor(acos(w.y)/pi * H). Mitsuba's sphere: u = atan2(l.y, l.x)/(2 pi) mod 1,
+# v = acos(l.z)/pi. With local l = (-w.x, w.z, w.y) the two agree; this is the
+# rotation taking l to w.
+SPHERE_UV_ROTATION = np.array([[-1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0],
+                               [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]])
+
+
+def bmp_pixels(path):
+    """An uncompressed 24/32-bit BMP as (H, W, 3) in [0, 1], top row first
+    (Mitsuba's reader refuses BITMAPV5 headers); None for other kinds."""
+    import struct
+    with open(path, "rb") as f:
+        data = f.read()
+    offset = struct.unpack("<I", data[10:14])[0]
+    width, height, _, bits, compression = struct.unpack("<iiHHI", data[18:34])
+    if bits not in (24, 32) or compression not in (0, 3):
+        return None
+    channels = bits // 8
+    stride = (width * channels + 3) // 4 * 4
+    rows = np.frombuffer(data, np.uint8, count=stride * abs(height), offset=offset)
+    pixels = rows.reshape(abs(height), stride)[:, :width * channels].reshape(
+        abs(height), width, channels)
+    if height > 0:  # stored bottom-up
+        pixels = pixels[::-1]
+    return pixels[..., 2::-1].astype(np.float64) / 255.0
+
+
 def camera_frame(camera):
     center = np.array(camera.get("center", [0, 0, 0]), float)
     direction = np.array(camera.get("direction", [0, 0, -1]), float)
@@ -404,14 +536,29 @@ def camera_frame(camera):
 def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
     camera = scene.camera
     center, direction, up = camera_frame(camera)
+    fov_axis = "y"
     if "angle" in camera:
         fov = camera["angle"][0]
+        if scene.dialect == "cambrian":
+            fov_axis = "x"  # the Cambrian dialect's angle is horizontal
     else:
         fov = math.degrees(2.0 * math.atan(ORIGINAL_PLANE_SCALE / 2.0))
     canvas = camera.get("canvasDistance", [0.0])[0]
-    if camera.get("interfereRatio", [0.0])[0] >= 1e-4:
-        warn("depth of field (interfereRatio) ignored: pinhole in both renders is not "
-             "guaranteed; ours will still use its lens")
+    lens_radius = camera.get("interfereRatio", [0.0])[0]
+    sensor_type = "perspective"
+    lens = {}
+    if lens_radius >= 1e-4:
+        # Ours: focus point F = center + d * focusDistance with d . direction = 1,
+        # i.e. a focal PLANE at focusDistance along the view direction; the lens
+        # is sampled uniformly on a disk of radius interfereRatio (concentric
+        # map); rays start on the plane at canvasDistance from the lens plane.
+        # Mitsuba's thinlens: focal plane at camera-space z = focus_distance,
+        # uniform (concentric) disk of aperture_radius, ray starts at z = near_clip.
+        if "focusDistance" not in camera:
+            warn("depth of field without focusDistance: focus_distance 1 assumed")
+        sensor_type = "thinlens"
+        lens = {"aperture_radius": float(lens_radius),
+                "focus_distance": float(camera.get("focusDistance", [1.0])[0])}
     if any(c > 0 for c in scene.background):
         warn("non-black Background: ours shows it to camera rays only; Mitsuba gets black")
     T = mi.ScalarTransform4f
@@ -419,11 +566,12 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
         "type": "scene",
         "integrator": {"type": "path", "max_depth": 6, "rr_depth": 100, "hide_emitters": False},
         "sensor": {
-            "type": "perspective",
+            "type": sensor_type,
             "to_world": T().look_at(origin=center.tolist(), target=(center + direction).tolist(),
                                     up=up.tolist()),
             "fov": float(fov),
-            "fov_axis": "y",
+            "fov_axis": fov_axis,
+            **lens,
             "near_clip": float(canvas) if canvas > 1e-4 else 1e-4,
             "far_clip": 1e7,
             "film": {"type": "hdrfilm", "width": args.width, "height": args.height,
@@ -432,22 +580,56 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
             "sampler": {"type": "independent", "sample_count": spp},
         },
     }
+    if any(m["refract"] > 0 for m in scene.materials):
+        warn("glass: Mitsuba's dielectric uses the exact Fresnel equations, ours Schlick's "
+             "approximation (and smallpt's roulette): glass differs slightly")
+    planes = [(np.array(s["normal"], float), s["offset"]) for s in scene.shapes
+              if s["kind"] == "plane" and np.allclose(s["matrix"], np.eye(4))]
+    for s in scene.shapes:
+        if (s["kind"] == "sphere" and max(scene.materials[s["material"]]["emission"]) > 0
+                and np.allclose(s["matrix"], np.eye(4))):
+            for n, offset in planes:
+                gap = abs(np.dot(n, s["center"]) - offset) / np.linalg.norm(n) - s["radius"]
+                if abs(gap) < 0.1 * s["radius"]:  # a cap through (or grazing) the plane
+                    warn(f"emissive sphere at {list(s['center'])} r {s['radius']} "
+                         f"{'crosses' if gap < 0 else 'grazes'} plane n={n.tolist()} "
+                         f"d={offset} (gap {gap:.3g}): Mitsuba's shadow-ray epsilon leaks "
+                         "its light past the plane (brighter than ours nearby)")
+    images = {}
     for index, shape in enumerate(scene.shapes):
         material = scene.materials[shape["material"]]
         matrix = shape["matrix"]
         kind = shape["kind"]
+        texture = None
+        pixels = None
+        uv_rotation = np.eye(4)
+        if material.get("texture"):
+            path = material["texture"]
+            if path not in images:
+                images[path] = texture_pixels(mi, path)
+            pixels = images[path]
+            if getattr(args, "flat_textures", False) or kind not in ("sphere", "plane"):
+                mean = pixels.reshape(-1, 3).astype(np.float64).mean(axis=0)
+                # ours: the texel replaces the colour
+                material = dict(material, color=[float(v) for v in mean], texture=None)
+                warn(f"texture {os.path.relpath(path)} on a {kind}: not mapped, Mitsuba gets "
+                     f"the flat mean texel {[round(v, 4) for v in mean]}")
+            elif kind == "sphere":
+                texture = bitmap_texture(mi, pixels)
+                uv_rotation = SPHERE_UV_ROTATION
         if kind == "sphere":
             linear = matrix[:3, :3]
             singular = np.linalg.svd(linear, compute_uv=False)
             if singular.max() - singular.min() > 1e-6 * singular.max():
                 warn("sphere under a non-uniform scale: Mitsuba's sphere cannot follow it")
-            if np.allclose(matrix, np.eye(4)):
+            if np.allclose(matrix, np.eye(4)) and texture is None:
                 entry = {"type": "sphere", "center": [float(v) for v in shape["center"]],
                          "radius": float(shape["radius"])}
             else:
                 r = shape["radius"]
                 entry = {"type": "sphere", "to_world": T(
-                    (matrix @ translate(shape["center"]) @ scale([r, r, r])).tolist())}
+                    (matrix @ translate(shape["center"]) @ uv_rotation
+                     @ scale([r, r, r])).tolist())}
         elif kind == "plane":
             n = np.array(shape["normal"], float)
             length = np.linalg.norm(n)
@@ -456,6 +638,24 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
             point = center - unit * (np.dot(unit, center) - shape["offset"] / length)
             local = translate(point) @ frame_matrix(n) @ scale(
                 [PLANE_HALF_SIZE, PLANE_HALF_SIZE, 1.0])
+            if material.get("texture"):
+                # Ours: texel column floor(x) mod W, row (from the top) floor(-y) mod H,
+                # x = 10 p.e1, y = 10 p.e2 (e1, e2 from orthonormal_basis(n)). The
+                # rectangle spans point + S (lx e1 + ly e2), lx = 2u - 1, ly = 2v - 1
+                # (Mitsuba's uv), so Mitsuba's (s, t) = (x / W, -y / H) is affine in uv.
+                e1, e2 = orthonormal_basis(unit)
+                rotation = np.eye(4)
+                rotation[:3, 0], rotation[:3, 1], rotation[:3, 2] = e1, e2, unit
+                half = PLANE_HALF_SIZE
+                local = translate(point) @ rotation @ scale([half, half, 1.0])
+                h, w = pixels.shape[:2]
+                tiling = PLANE_TEXELS_PER_UNIT
+                to_uv = np.eye(4)
+                to_uv[0, 0] = 2 * half * tiling / w
+                to_uv[0, 3] = math.fmod(tiling * (np.dot(point, e1) - half) / w, 1.0)
+                to_uv[1, 1] = -2 * half * tiling / h
+                to_uv[1, 3] = math.fmod(-tiling * (np.dot(point, e2) - half) / h, 1.0)
+                texture = bitmap_texture(mi, pixels, to_uv)
             entry = {"type": "rectangle", "to_world": T((matrix @ local).tolist())}
             if max(material["emission"]) > 0:
                 warn("emissive Plane: Mitsuba's area emitter is one-sided (along the normal), "
@@ -473,7 +673,7 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
                      "to_world": T(matrix.tolist())}
         else:
             continue
-        entry["bsdf"] = mitsuba_bsdf(material)
+        entry["bsdf"] = mitsuba_bsdf(material, texture)
         if max(material["emission"]) > 0:
             entry["emitter"] = {"type": "area", "radiance": rgb(material["emission"])}
         d[f"shape_{index:03d}_{kind}"] = entry
@@ -624,6 +824,9 @@ def main():
                              "scalar_rgb, 64 for llvm_ad_rgb)")
     parser.add_argument("--out", default="output/crosscheck")
     parser.add_argument("--mitsuba-only", action="store_true", help="skip our renderer")
+    parser.add_argument("--dialect", default="auto", choices=["auto", "canonical", "cambrian"])
+    parser.add_argument("--flat-textures", action="store_true",
+                        help="give textured materials their mean texel instead of the map")
     parser.add_argument("--tolerance", type=float, default=0.03,
                         help="largest accepted |mean ratio - 1| per channel")
     args = parser.parse_args()
@@ -642,7 +845,7 @@ def main():
     if args.pass_spp is None:
         args.pass_spp = 64 if args.variant.startswith("llvm") else max(args.spp, args.reference_spp)
 
-    scene = Scene(args.scene)
+    scene = Scene(args.scene, dialect=args.dialect)
     tmpdir = os.path.join(args.out, "mitsuba_inputs")
     os.makedirs(tmpdir, exist_ok=True)
     scene_dict = mitsuba_scene_dict(mi, scene, args, args.spp, os.path.abspath(tmpdir))
