@@ -24,7 +24,7 @@ pub fn run(args: &CheckArgs) -> Result<(), String> {
                 for warning in &scene.warnings {
                     eprintln!("warning: {warning}");
                 }
-                println!("{}: {}", path.display(), summary(&scene));
+                say!("{}: {}", path.display(), summary(&scene));
             }
             Err(error) => {
                 eprintln!("error: {error}");

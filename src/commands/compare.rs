@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 
+
 use pathtracer::image_io::{read_image, write_image};
 use pathtracer::metrics::compare;
 
@@ -24,9 +25,9 @@ pub fn run(args: &CompareArgs) -> Result<(), String> {
     let reference = read_image(&args.reference)?;
     let comparison = compare(&test, &reference)?;
     if args.json {
-        println!("{}", comparison.to_json());
+        say!("{}", comparison.to_json());
     } else {
-        println!("{comparison}");
+        say!("{comparison}");
     }
     Ok(())
 }

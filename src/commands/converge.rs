@@ -60,11 +60,15 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
             image
         }
     };
-    println!("spp  seconds  rmse  rel_mse  ssim");
+    say!("spp  seconds  rmse  rel_mse  ssim");
     let points = converge(&scene, &world, &settings, &reference, args.max_spp, |p| {
-        println!(
+        say!(
             "{} {:.3} {:.6} {:.6e} {:.4}",
-            p.spp, p.seconds, p.rmse, p.rel_mse, p.ssim
+            p.spp,
+            p.seconds,
+            p.rmse,
+            p.rel_mse,
+            p.ssim
         )
     })?;
     let csv = args
@@ -89,7 +93,7 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
         &svg,
         &log_log_svg(&name, "seconds", "relative MSE", &series),
     )?;
-    println!("wrote {} and {}", csv.display(), svg.display());
+    say!("wrote {} and {}", csv.display(), svg.display());
     Ok(())
 }
 
@@ -136,7 +140,7 @@ pub fn plot(args: &PlotArgs) -> Result<(), String> {
                 Some(Reach::Extrapolated(t)) => format!("{t:.3} s (extrapolated)"),
                 None => "no data".to_string(),
             };
-            println!("{name}: {} {target:.4e} reached at {reach}", args.column);
+            say!("{name}: {} {target:.4e} reached at {reach}", args.column);
         }
         series.push(Series { name, points });
     }

@@ -1,5 +1,15 @@
 //! Options shared by the subcommands, and scene loading with its warnings.
 
+/// `println!` that ignores a closed standard output (e.g. `| head`): the
+/// command's files are written whatever happens to its report.
+macro_rules! say {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($arg)*);
+    }};
+}
+pub(crate) use say;
+
 pub mod check;
 pub mod compare;
 pub mod converge;

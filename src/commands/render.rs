@@ -94,7 +94,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         );
         write_atomically(&sidecar, json.as_bytes())?;
     }
-    println!(
+    say!(
         "{}: {}x{}, {:.1} spp spent, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped, {} fireflies{}",
         output.display(),
         settings.width,
@@ -124,27 +124,27 @@ fn print_phases(scene: &Scene, world: &World, world_seconds: f64, render_seconds
             " (skipped: none in the scene)"
         }
     };
-    println!("parse           {:9.4} s", load.parse_seconds);
-    println!(
+    say!("parse           {:9.4} s", load.parse_seconds);
+    say!(
         "load meshes     {:9.4} s  {} OBJ files{}",
         load.mesh_seconds,
         load.meshes_loaded,
         skipped(load.meshes_loaded > 0)
     );
-    println!(
+    say!(
         "load textures   {:9.4} s  {} images{}",
         load.texture_seconds,
         load.textures_loaded,
         skipped(load.textures_loaded > 0)
     );
-    println!(
+    say!(
         "build world     {:9.4} s  {} primitives, {} triangles in BVHs",
         world_seconds,
         world.primitives().len(),
         world.triangle_count()
     );
-    println!("render          {render_seconds:9.4} s");
-    println!(
+    say!("render          {render_seconds:9.4} s");
+    say!(
         "lens sampling   {}",
         if plan.lens {
             "on"
@@ -152,7 +152,7 @@ fn print_phases(scene: &Scene, world: &World, world_seconds: f64, render_seconds
             "off (no depth of field)"
         }
     );
-    println!(
+    say!(
         "time sampling   {}",
         if plan.time {
             "on"
