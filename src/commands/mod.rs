@@ -8,7 +8,6 @@ macro_rules! say {
         let _ = writeln!(std::io::stdout(), $($arg)*);
     }};
 }
-pub(crate) use say;
 
 pub mod check;
 pub mod compare;
