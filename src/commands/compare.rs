@@ -5,7 +5,6 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-
 use pathtracer::image_io::{read_image, write_image};
 use pathtracer::metrics::compare;
 

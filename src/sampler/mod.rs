@@ -131,10 +131,31 @@ fn shuffle_index(group_seed: u64, sample_index: u64) -> u32 {
 /// Sample indices below 2^32 index one scrambled Sobol' sequence; beyond, the
 /// index wraps modulo 2^32 and each block of 2^32 samples gets fresh scrambles.
 pub fn sobol_sample(pixel_index: u64, sample_index: u64, dimension: u32, seed: u64) -> f64 {
+    let pixel_seed = pixel_seed(pixel_index, seed);
+    if dimension >= SOBOL_DIMENSIONS {
+        return padding_value(padding_seed(pixel_seed, sample_index), dimension);
+    }
     let group = dimension / sobol::DIMENSIONS as u32;
-    let group_seed = group_seed(pixel_seed(pixel_index, seed), group, sample_index);
+    let group_seed = group_seed(pixel_seed, group, sample_index);
     let shuffled_index = shuffle_index(group_seed, sample_index);
     to_unit(group_values(group_seed, shuffled_index)[dimension as usize % sobol::DIMENSIONS])
+}
+
+/// Dimensions drawn from the scrambled Sobol' sequence; later ones (deep
+/// bounces, where stratification no longer pays for its cost) are padded with
+/// hashed independent values, as padded samplers do.
+pub const SOBOL_DIMENSIONS: u32 = 8;
+
+fn padding_seed(pixel_seed: u64, sample_index: u64) -> u64 {
+    mix64(pixel_seed ^ mix64(sample_index ^ 0xA5A5_5A5A_0F0F_F0F0))
+}
+
+/// A hashed uniform value for a padding dimension (one multiply-xorshift).
+fn padding_value(padding_seed: u64, dimension: u32) -> f64 {
+    let mut z = padding_seed ^ (dimension as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 32)).wrapping_mul(0xD6E8_FEB8_6659_FD93);
+    z = (z ^ (z >> 32)).wrapping_mul(0xD6E8_FEB8_6659_FD93);
+    to_unit((z ^ (z >> 32)) >> 11)
 }
 
 /// The Sobol' values of one pixel sample, in dimension order; equal to
@@ -146,6 +167,8 @@ pub struct SobolStream {
     dimension: u32,
     /// The values of the current group of four dimensions.
     values: [u64; sobol::DIMENSIONS],
+    /// Seed of the padding dimensions (from `SOBOL_DIMENSIONS` on).
+    padding_seed: u64,
 }
 
 impl SobolStream {
@@ -155,6 +178,7 @@ impl SobolStream {
             sample_index,
             dimension: 0,
             values: [0; sobol::DIMENSIONS],
+            padding_seed: 0,
         }
     }
 
@@ -165,6 +189,13 @@ impl SobolStream {
 
     /// The value of the next dimension, in `[0, 1)`.
     pub fn next_f64(&mut self) -> f64 {
+        if self.dimension >= SOBOL_DIMENSIONS {
+            if self.dimension == SOBOL_DIMENSIONS {
+                self.padding_seed = padding_seed(self.pixel_seed, self.sample_index);
+            }
+            self.dimension = self.dimension.saturating_add(1);
+            return padding_value(self.padding_seed, self.dimension - 1);
+        }
         let dimension_in_group = self.dimension as usize % sobol::DIMENSIONS;
         if dimension_in_group == 0 {
             let group = self.dimension / sobol::DIMENSIONS as u32;
@@ -178,7 +209,7 @@ impl SobolStream {
 
     /// The next two dimensions, starting from an even one.
     pub fn next_2d(&mut self) -> [f64; 2] {
-        if self.dimension % 2 == 1 {
+        if self.dimension % 2 == 1 && self.dimension < SOBOL_DIMENSIONS {
             self.next_f64();
         }
         [self.next_f64(), self.next_f64()]
