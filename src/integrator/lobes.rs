@@ -71,20 +71,34 @@ pub fn pa1_lights(view: &SceneView, at: &Shading, lobes: &Lobes) -> Color {
     }
 }
 
-/// The glass lobe: smallpt's Russian roulette between reflection and
-/// refraction (reflection only under total internal reflection), with its
-/// weight folded into `throughput`.
+/// How the glass lobe chooses between reflection and refraction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GlassChoice {
+    /// smallpt's roulette: reflect with probability 0.25 + Re / 2.
+    Smallpt,
+    /// Reflect with probability Re: the weights become exactly 1, which has
+    /// the same expectation and less variance.
+    Fresnel,
+}
+
+/// The glass lobe: a roulette between reflection and refraction (reflection
+/// only under total internal reflection), with its weight folded into
+/// `throughput`.
 pub fn glass_direction(
     ray: &Ray,
     at: &Shading,
     sampler: &mut Sampler,
     throughput: &mut Color,
+    choice: GlassChoice,
 ) -> Vec3 {
     let glass = dielectric(&ray.direction, &at.normal, at.entering, at.material.ior);
     match glass.refracted {
         None => glass.reflected,
         Some(refracted) => {
-            let p = 0.25 + 0.5 * glass.reflectance;
+            let p = match choice {
+                GlassChoice::Smallpt => 0.25 + 0.5 * glass.reflectance,
+                GlassChoice::Fresnel => glass.reflectance.clamp(1e-6, 1.0 - 1e-6),
+            };
             if sampler.next_f64() < p {
                 *throughput *= glass.reflectance / p;
                 glass.reflected

@@ -13,7 +13,7 @@ use crate::sampling::{cosine_hemisphere, reflect};
 use crate::shading::Shading;
 
 use super::SceneView;
-use super::lobes::{Lobe, Lobes, glass_direction, pa1_lights};
+use super::lobes::{GlassChoice, Lobe, Lobes, glass_direction, pa1_lights};
 
 /// Scattering vertices of the original before a path ends.
 pub const MAX_DEPTH: u32 = 5;
@@ -45,7 +45,9 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
         let direction = match lobes.pick(sampler.next_f64()) {
             Lobe::Diffuse => cosine_hemisphere(&at.normal, sampler.next_2d()),
             Lobe::Mirror => reflect(&ray.direction, &at.normal),
-            Lobe::Glass => glass_direction(&ray, &at, sampler, &mut throughput),
+            Lobe::Glass => {
+                glass_direction(&ray, &at, sampler, &mut throughput, GlassChoice::Smallpt)
+            }
         };
         ray = Ray::new(at.spawn_origin(&direction), direction, ray.time);
     }

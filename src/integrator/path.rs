@@ -27,7 +27,7 @@ use crate::sampling::{cosine_hemisphere, reflect};
 use crate::shading::Shading;
 
 use super::SceneView;
-use super::lobes::{Lobe, Lobes, glass_direction, pa1_lights};
+use super::lobes::{GlassChoice, Lobe, Lobes, glass_direction, pa1_lights};
 
 /// Scattering vertices after which Russian roulette may end a path.
 const ROULETTE_DEPTH: u32 = 3;
@@ -94,7 +94,9 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
                 direction
             }
             Lobe::Mirror => reflect(&ray.direction, &at.normal),
-            Lobe::Glass => glass_direction(&ray, &at, sampler, &mut throughput),
+            Lobe::Glass => {
+                glass_direction(&ray, &at, sampler, &mut throughput, GlassChoice::Fresnel)
+            }
         };
         if depth >= ROULETTE_DEPTH {
             let survival = throughput.max_component().min(1.0);
