@@ -144,7 +144,7 @@ pub fn sobol_sample(pixel_index: u64, sample_index: u64, dimension: u32, seed: u
 /// Dimensions drawn from the scrambled Sobol' sequence; later ones (deep
 /// bounces, where stratification no longer pays for its cost) are padded with
 /// hashed independent values, as padded samplers do.
-pub const SOBOL_DIMENSIONS: u32 = 8;
+pub const SOBOL_DIMENSIONS: u32 = 12;
 
 fn padding_seed(pixel_seed: u64, sample_index: u64) -> u64 {
     mix64(pixel_seed ^ mix64(sample_index ^ 0xA5A5_5A5A_0F0F_F0F0))

@@ -57,7 +57,7 @@ fn unscrambled_first_pair_is_a_zero_two_sequence() {
 #[test]
 fn scrambled_shuffled_pairs_stay_stratified() {
     for (pixel, seed) in [(0, 0), (17, 3), (123_456, 0xfeed)] {
-        for first_dimension in [0, 4] {
+        for first_dimension in [0, 4, 8] {
             for k in 0..=10 {
                 let points = sobol_points(pixel, seed, 1 << k, first_dimension);
                 let label = format!("pixel {pixel} seed {seed} dims {first_dimension}+ 2^{k}");
