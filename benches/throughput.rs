@@ -179,23 +179,26 @@ fn renders(c: &mut Criterion) {
     for (name, path) in scenes {
         let scene = load_scene(&path, &LoadOptions::default()).expect("bench scene loads");
         let world = World::build(&scene);
-        let settings = RenderSettings {
-            width: 128,
-            height: 96,
-            spp: 16,
-            seed: 0,
-            threads: None,
-            integrator: Integrator::Original,
-            max_depth: pathtracer::integrator::original::MAX_DEPTH,
-            sampler: SamplerKind::Sobol,
-            progress: false,
-            clamp: None,
-        };
-        let samples = settings.width as u64 * settings.height as u64 * settings.spp as u64;
-        group.throughput(Throughput::Elements(samples));
-        group.bench_with_input(BenchmarkId::from_parameter(name), &settings, |b, s| {
-            b.iter(|| render(&scene, &world, s).expect("renders"))
-        });
+        for integrator in Integrator::ALL {
+            let settings = RenderSettings {
+                width: 128,
+                height: 96,
+                spp: 16,
+                seed: 0,
+                threads: None,
+                integrator,
+                max_depth: pathtracer::integrator::original::MAX_DEPTH,
+                sampler: SamplerKind::Sobol,
+                progress: false,
+                clamp: None,
+            };
+            let samples = settings.width as u64 * settings.height as u64 * settings.spp as u64;
+            group.throughput(Throughput::Elements(samples));
+            let id = BenchmarkId::new(name, integrator.name());
+            group.bench_with_input(id, &settings, |b, s| {
+                b.iter(|| render(&scene, &world, s).expect("renders"))
+            });
+        }
     }
     group.finish();
 }

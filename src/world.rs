@@ -86,12 +86,15 @@ impl Primitive {
         }
     }
 
-    /// The world-space surface of a hit found by [`Primitive::intersect`].
-    pub fn surface(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
+    /// The world-space surface of a hit found by [`Primitive::intersect`]
+    /// (uv and tangent only `with_uv`, see [`Shape::surface`]).
+    pub fn surface(&self, ray: &Ray, hit: &Intersection, with_uv: bool) -> SurfaceHit {
         match &self.transform {
-            None => self.shape.surface(ray, hit),
+            None => self.shape.surface(ray, hit, with_uv),
             Some(transform) => {
-                let local = self.shape.surface(&transform.ray_to_object(ray), hit);
+                let local = self
+                    .shape
+                    .surface(&transform.ray_to_object(ray), hit, with_uv);
                 transform.surface_to_world(&local)
             }
         }
@@ -115,6 +118,9 @@ pub struct World {
     /// Indices of the unbounded primitives (planes), tested linearly.
     unbounded: Vec<u32>,
     bvh: Bvh,
+    /// Per material: whether a texture or normal map reads uv and tangents.
+    /// Empty: compute them always.
+    needs_uv: Vec<bool>,
 }
 
 impl World {
@@ -126,7 +132,13 @@ impl World {
     pub fn build(scene: &Scene) -> World {
         let mut builder = Builder::default();
         builder.visit(&scene.root, None);
-        World::from_primitives(builder.primitives)
+        let mut world = World::from_primitives(builder.primitives);
+        world.needs_uv = scene
+            .materials
+            .iter()
+            .map(|m| m.texture.is_some() || m.normal_map.is_some())
+            .collect();
+        world
     }
 
     /// A world over already made primitives.
@@ -150,6 +162,7 @@ impl World {
             bounded,
             unbounded,
             bvh,
+            needs_uv: Vec::new(),
         }
     }
 
@@ -180,7 +193,12 @@ impl World {
         });
         let (index, hit) = best?;
         let primitive = &self.primitives[index];
-        let surface = primitive.surface(ray, &hit);
+        let with_uv = self
+            .needs_uv
+            .get(primitive.material)
+            .copied()
+            .unwrap_or(true);
+        let surface = primitive.surface(ray, &hit, with_uv);
         debug_assert!(surface.point.iter().all(|c| c.is_finite()));
         Some(WorldHit {
             t: hit.t,

@@ -43,8 +43,12 @@ impl Shape {
         }
     }
 
-    pub fn surface(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
+    /// The surface at a hit. `with_uv: false` lets a shape skip texture
+    /// coordinates and tangents that nothing will read (a sphere's uv costs an
+    /// atan2 and an asin); they are then zero.
+    pub fn surface(&self, ray: &Ray, hit: &Intersection, with_uv: bool) -> SurfaceHit {
         match self {
+            Shape::Sphere(s) if !with_uv => s.surface_without_uv(ray, hit),
             Shape::Sphere(s) => s.surface(ray, hit),
             Shape::Plane(s) => s.surface(ray, hit),
             Shape::Triangle(s) => s.surface(ray, hit),

@@ -80,6 +80,20 @@ impl Sphere {
         }
     }
 
+    /// [`Sphere::surface`] without uv and tangent (left zero and along x).
+    pub fn surface_without_uv(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
+        let center = self.center_at(ray.time);
+        let w = normalize_or(ray.at(hit.t) - center, Vec3::y());
+        SurfaceHit {
+            point: center + w * self.radius,
+            geometric_normal: w,
+            shading_normal: w,
+            tangent: fallback_tangent(&w),
+            uv: [0.0, 0.0],
+            uv_mapping: UvMapping::Unit,
+        }
+    }
+
     pub fn bounds(&self) -> Aabb {
         let r = Vec3::repeat(self.radius);
         let start = Aabb {
@@ -108,6 +122,9 @@ mod tests {
         assert!((back.t - 6.0).abs() < 1e-12);
         let s = sphere.surface(&ray, &hit);
         assert!((s.geometric_normal - Vec3::new(0.0, 0.0, -1.0)).norm() < 1e-12);
+        let plain = sphere.surface_without_uv(&ray, &hit);
+        assert_eq!(plain.point, s.point);
+        assert_eq!(plain.geometric_normal, s.geometric_normal);
     }
 
     #[test]
