@@ -934,7 +934,7 @@ def main():
         else:
             print(f"agreement: mean ratio within {off:.4f} of 1 (tolerance {args.tolerance})")
     print("note: pixel filters differ (Mitsuba box, ours 2x2 tent): edges differ slightly; "
-          "Mitsuba samples lights explicitly, ours does not")
+          "both sample lights (ours with --integrator path, the default)")
     with open(os.path.join(args.out, "crosscheck.json"), "w") as f:
         json.dump(report, f, indent=2)
     print(f"wrote {os.path.join(args.out, 'crosscheck.json')}")
