@@ -7,15 +7,12 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use pathtracer::color::Color;
 use pathtracer::integrator::Integrator;
 use pathtracer::math::{Ray, Vec3};
 use pathtracer::render::{RenderSettings, render};
 use pathtracer::rng::Rng;
 use pathtracer::sampler::SamplerKind;
-use pathtracer::scene::model::{
-    CameraDesc, CurveKind, Dialect, Material, MeshData, Object, Profile, Scene,
-};
+use pathtracer::scene::model::{CurveKind, Material, MeshData, Object, Profile, Scene};
 use pathtracer::scene::{LoadOptions, load_scene};
 use pathtracer::world::World;
 
@@ -32,28 +29,7 @@ fn shared(relative: &str) -> Option<PathBuf> {
 }
 
 fn scene_with(root: Object) -> Scene {
-    Scene {
-        camera: CameraDesc {
-            center: Vec3::new(0.0, 0.0, 5.0),
-            direction: Vec3::new(0.0, 0.0, -1.0),
-            up: Vec3::new(0.0, 1.0, 0.0),
-            width: 64,
-            height: 64,
-            fov: None,
-            canvas_distance: 0.0,
-            focus_distance: 1.0,
-            lens_radius: 0.0,
-        },
-        background: Color::BLACK,
-        materials: vec![Material::default()],
-        textures: Vec::new(),
-        lights: Vec::new(),
-        root,
-        dialect: Dialect::Canonical,
-        warnings: Vec::new(),
-        unsupported: Vec::new(),
-        load: Default::default(),
-    }
+    Scene::new(vec![Material::default()], root)
 }
 
 fn load_obj(path: &Path) -> MeshData {

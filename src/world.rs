@@ -323,33 +323,11 @@ impl Builder {
 mod tests {
     use super::*;
 
-    use crate::color::Color;
     use crate::math::Matrix;
-    use crate::scene::model::{CameraDesc, Dialect, MeshData};
+    use crate::scene::model::MeshData;
 
     fn scene(root: Object) -> Scene {
-        Scene {
-            camera: CameraDesc {
-                center: Point3::zeros(),
-                direction: -Vec3::z(),
-                up: Vec3::y(),
-                width: 4,
-                height: 4,
-                fov: None,
-                canvas_distance: 0.0,
-                focus_distance: 1.0,
-                lens_radius: 0.0,
-            },
-            background: Color::BLACK,
-            materials: Vec::new(),
-            textures: Vec::new(),
-            lights: Vec::new(),
-            root,
-            dialect: Dialect::Canonical,
-            warnings: Vec::new(),
-            unsupported: Vec::new(),
-            load: Default::default(),
-        }
+        Scene::new(Vec::new(), root)
     }
 
     fn translate(offset: Vec3, child: Object) -> Object {

@@ -136,29 +136,7 @@ fn tiny_distant_sphere_has_the_small_cone_density() {
 }
 
 fn scene(materials: Vec<crate::scene::model::Material>, root: Object) -> Scene {
-    use crate::scene::model::{CameraDesc, Dialect};
-    Scene {
-        camera: CameraDesc {
-            center: Point3::zeros(),
-            direction: -Vec3::z(),
-            up: Vec3::y(),
-            width: 4,
-            height: 4,
-            fov: None,
-            canvas_distance: 0.0,
-            focus_distance: 1.0,
-            lens_radius: 0.0,
-        },
-        background: Color::BLACK,
-        materials,
-        textures: Vec::new(),
-        lights: Vec::new(),
-        root,
-        dialect: Dialect::Canonical,
-        warnings: Vec::new(),
-        unsupported: Vec::new(),
-        load: Default::default(),
-    }
+    Scene::new(materials, root)
 }
 
 fn transformed(matrix: crate::math::Matrix, child: Object) -> Object {

@@ -31,6 +31,36 @@ pub struct Scene {
     pub load: LoadStats,
 }
 
+impl Scene {
+    /// A scene around `root`, for scenes built in code: a pinhole camera at
+    /// the origin looking down -z (16x16, the original's field of view), a
+    /// black background, no lights, the canonical dialect.
+    pub fn new(materials: Vec<Material>, root: Object) -> Scene {
+        Scene {
+            camera: CameraDesc {
+                center: Point3::zeros(),
+                direction: Vec3::new(0.0, 0.0, -1.0),
+                up: Vec3::new(0.0, 1.0, 0.0),
+                width: 16,
+                height: 16,
+                fov: None,
+                canvas_distance: 0.0,
+                focus_distance: 1.0,
+                lens_radius: 0.0,
+            },
+            background: Color::BLACK,
+            materials,
+            textures: Vec::new(),
+            lights: Vec::new(),
+            root,
+            dialect: Dialect::Canonical,
+            warnings: Vec::new(),
+            unsupported: Vec::new(),
+            load: LoadStats::default(),
+        }
+    }
+}
+
 /// Time spent in each phase of loading a scene, and what was loaded.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct LoadStats {

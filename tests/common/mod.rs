@@ -9,9 +9,7 @@ pub use shapes::*;
 
 use std::path::{Path, PathBuf};
 
-use pathtracer::color::Color;
-use pathtracer::math::Vec3;
-use pathtracer::scene::model::{CameraDesc, Dialect, Material, Object, Scene};
+use pathtracer::scene::model::{Material, Object, Scene};
 
 pub fn shared() -> Option<PathBuf> {
     let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared"));
@@ -77,28 +75,7 @@ pub fn corpus(shared: &Path) -> Vec<(PathBuf, PathBuf)> {
 
 /// A scene with the camera at the origin looking down -z, built in code.
 pub fn scene_with(materials: Vec<Material>, root: Object) -> Scene {
-    Scene {
-        camera: CameraDesc {
-            center: Vec3::zeros(),
-            direction: Vec3::new(0.0, 0.0, -1.0),
-            up: Vec3::new(0.0, 1.0, 0.0),
-            width: 16,
-            height: 16,
-            fov: None,
-            canvas_distance: 0.0,
-            focus_distance: 1.0,
-            lens_radius: 0.0,
-        },
-        background: Color::BLACK,
-        materials,
-        textures: Vec::new(),
-        lights: Vec::new(),
-        root,
-        dialect: Dialect::Canonical,
-        warnings: Vec::new(),
-        unsupported: Vec::new(),
-        load: Default::default(),
-    }
+    Scene::new(materials, root)
 }
 
 /// A file below `../shared`, or `None` (with a note) when it is absent.

@@ -18,7 +18,7 @@ pub fn load_textures(
 ) -> Result<(Vec<Material>, Vec<Arc<Texture>>), SceneError> {
     let mut used = BTreeSet::new();
     root.for_each_leaf(&mut |leaf| {
-        if let Some(m) = material_of(leaf) {
+        if let Some(m) = leaf.material() {
             used.insert(m);
         }
     });
@@ -38,19 +38,6 @@ pub fn load_textures(
         materials.push(material);
     }
     Ok((materials, textures))
-}
-
-fn material_of(leaf: &Object) -> Option<usize> {
-    match leaf {
-        Object::Sphere { material, .. }
-        | Object::Plane { material, .. }
-        | Object::Triangle { material, .. }
-        | Object::Rectangle { material, .. }
-        | Object::Disk { material, .. }
-        | Object::Mesh { material, .. }
-        | Object::Revolution { material, .. } => Some(*material),
-        Object::Group(_) | Object::Transform { .. } => None,
-    }
 }
 
 fn load(
