@@ -40,8 +40,8 @@ pub fn direct(world: &World, lights: &[Light], at: &Shading) -> Color {
                 };
                 (d, f64::INFINITY, *color)
             }
-            // Area lights of the coursework dialects are only reached through
-            // their emitting geometry, when a scene gives them one.
+            // Disk and area lights are emitting geometry in the world (the
+            // scene builder adds it): found by rays, not here.
             Light::Disk { .. } | Light::Area { .. } => continue,
         };
         let cosine = at.normal.dot(&to_light);

@@ -6,10 +6,11 @@
 //! sphere is an ellipsoid and is left to BSDF sampling), triangles,
 //! rectangles, disks and mesh triangles, with any transform. Not sampled, so
 //! reached by BSDF sampling alone (MIS weight 1): planes, surfaces of
-//! revolution, the background, and the coursework `Light::Disk` /
-//! `Light::Area` entries, which have no geometry in the world and which the
-//! original estimator ignores too. The PA1 point and directional lights are
-//! not in this table: both integrators add them in `integrator::lights`.
+//! revolution and the background. The coursework disk and area lights are
+//! emitting disks and parallelograms in the world (the scene builder makes
+//! them), so they are sampled like any other. The PA1 point and directional
+//! lights are not in this table: both integrators add them in
+//! `integrator::lights`.
 
 pub mod distribution;
 pub mod emitter;

@@ -1,11 +1,13 @@
 //! `Lights { ... }` and `DiskLights { ... }`: point, directional, disk and area lights.
 
+use std::f64::consts::PI;
+
 use crate::color::Color;
 use crate::math::{Point3, Vec3};
 use crate::scene::ast::Block;
 use crate::scene::build::{Context, Cursor};
 use crate::scene::error::SceneError;
-use crate::scene::model::Light;
+use crate::scene::model::{Light, Material, Object};
 
 pub fn build_lights(context: &mut Context, block: &Block) -> Result<Vec<Light>, SceneError> {
     let mut lights = Vec::new();
@@ -104,4 +106,93 @@ fn build_light(context: &mut Context, block: &Block) -> Result<Option<Light>, Sc
             color,
         },
     }))
+}
+
+/// The disk and area lights of the coursework dialects as emitting geometry:
+/// a black disk or parallelogram, so that both integrators find them by their
+/// rays and the path integrator samples them. The light's `color` is read as
+/// its radiant power (the coursework scenes give disks of radius 1.5 a colour
+/// of 250): a Lambertian emitter of area A and power P has radiance
+/// P / (pi A). Emission is two-sided, like every emitter of the original.
+/// Material indices start at `first_material`.
+pub fn emitting_geometry(lights: &[Light], first_material: usize) -> Vec<(Material, Object)> {
+    let mut out = Vec::new();
+    for light in lights {
+        let material = first_material + out.len();
+        let (color, object) = match light {
+            Light::Disk {
+                center,
+                normal,
+                radius,
+                color,
+            } => (
+                *color / (PI * PI * radius * radius),
+                Object::Disk {
+                    center: *center,
+                    normal: *normal,
+                    radius: *radius,
+                    material,
+                },
+            ),
+            Light::Area {
+                corner,
+                edge_u,
+                edge_v,
+                color,
+            } => (
+                *color / (PI * edge_u.cross(edge_v).norm()),
+                Object::Rectangle {
+                    origin: *corner,
+                    edge_u: *edge_u,
+                    edge_v: *edge_v,
+                    material,
+                },
+            ),
+            Light::Point { .. } | Light::Directional { .. } => continue,
+        };
+        if !color.is_finite() {
+            continue;
+        }
+        let emitter = Material {
+            color: Color::BLACK,
+            emission: color,
+            ..Material::DEFAULT
+        };
+        out.push((emitter, object));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::build::build_text;
+
+    #[test]
+    fn disk_lights_become_emitting_disks_of_their_power() {
+        let scene = build_text(
+            "PerspectiveCamera { width 2 height 2 }\n\
+             DiskLights { numDiskLights 1 DiskLight { position 0 4 0 direction 0 -1 0 color 10 20 30 radius 2 } }\n\
+             Materials { numMaterials 1 Material { color 1 1 1 } }\n\
+             Group { numObjects 1 MaterialIndex 0 Sphere { center 0 0 0 radius 1 } }",
+        )
+        .expect("builds");
+        assert_eq!(scene.lights.len(), 1);
+        assert_eq!(scene.materials.len(), 2);
+        let emitter = &scene.materials[1];
+        assert!(emitter.color.is_black());
+        // Power P over pi * area: 10 / (pi * pi * 2^2).
+        assert!((emitter.emission.r - 10.0 / (PI * PI * 4.0)).abs() < 1e-12);
+        let mut disks = 0;
+        scene.root.for_each_leaf(&mut |leaf| {
+            if let Object::Disk {
+                radius, material, ..
+            } = leaf
+            {
+                assert_eq!((*radius, *material), (2.0, 1));
+                disks += 1;
+            }
+        });
+        assert_eq!(disks, 1);
+    }
 }

@@ -160,6 +160,10 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
     for (block, location) in group_blocks {
         roots.push(objects.group(&mut context, block, location)?);
     }
+    for (material, object) in lights::emitting_geometry(&lights, specs.len()) {
+        specs.push(material::MaterialSpec::new(material));
+        roots.push(object);
+    }
     let root = match roots.len() {
         1 => roots.pop().unwrap_or(Object::Group(Vec::new())),
         _ => Object::Group(roots),
