@@ -35,7 +35,7 @@ pub fn run(args: &CompareArgs) -> Result<(), String> {
 pub struct ConvertArgs {
     /// The image to read (BMP, PNG or PFM).
     input: PathBuf,
-    /// The image to write (.bmp, .png or .pfm).
+    /// The image to write (.bmp, .png, .pfm or .exr).
     output: PathBuf,
     /// Gamma for 8-bit output, as `render --gamma`.
     #[arg(long)]

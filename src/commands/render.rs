@@ -17,7 +17,7 @@ use super::{SamplingOptions, default_output, load_for_render};
 #[derive(Args)]
 pub struct RenderArgs {
     scene: PathBuf,
-    /// Output image (.bmp, .png or .pfm); default output/<scene name>.bmp.
+    /// Output image (.bmp, .png, .pfm or .exr); default output/<scene name>.bmp.
     #[arg(short, long)]
     output: Option<PathBuf>,
     /// Samples per pixel in total (spread over the 2x2 sub-pixels); with
@@ -77,7 +77,9 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let pixels = (settings.width as u64 * settings.height as u64).max(1);
     if is_hdr(&output) {
         // HDR images are measurements: say how they were made, next to them.
-        let sidecar = output.with_extension("pfm.json");
+        let mut sidecar = output.clone().into_os_string();
+        sidecar.push(".json");
+        let sidecar = std::path::PathBuf::from(sidecar);
         let json = format!(
             "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}}}\n",
             args.scene.display().to_string(),
@@ -164,5 +166,5 @@ fn print_phases(scene: &Scene, world: &World, world_seconds: f64, render_seconds
 
 fn is_hdr(path: &std::path::Path) -> bool {
     path.extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("pfm"))
+        .is_some_and(|e| e.eq_ignore_ascii_case("pfm") || e.eq_ignore_ascii_case("exr"))
 }

@@ -29,13 +29,16 @@ pub(super) fn read_capped(path: &Path) -> Result<Vec<u8>, String> {
     Ok(bytes)
 }
 
-/// Decodes BMP, PNG, JPEG or TGA bytes; 8-bit values become `v / 255`, no gamma.
+/// Decodes BMP, PNG, JPEG, TGA or EXR bytes; 8-bit values become `v / 255`,
+/// no gamma; float values are kept.
 pub(super) fn decode_ldr(bytes: &[u8]) -> Result<Image, String> {
     let mut reader = ImageReader::new(Cursor::new(bytes))
         .with_guessed_format()
         .map_err(|e| format!("cannot read: {e}"))?;
     if reader.format().is_none() {
-        return Err("unrecognised image format (readable: BMP, PNG, JPEG, TGA, PFM)".to_string());
+        return Err(
+            "unrecognised image format (readable: BMP, PNG, JPEG, TGA, PFM, EXR)".to_string(),
+        );
     }
     let mut limits = Limits::default();
     limits.max_image_width = Some(MAX_DIMENSION as u32);

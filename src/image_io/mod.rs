@@ -8,6 +8,7 @@
 mod atomic;
 mod bmp_format;
 mod decode;
+mod exr_format;
 mod pfm;
 mod png_format;
 mod quantize;
@@ -39,9 +40,10 @@ enum Format {
     Bmp,
     Png,
     Pfm,
+    Exr,
 }
 
-const SUPPORTED_EXTENSIONS: &str = ".bmp, .png, .pfm";
+const SUPPORTED_EXTENSIONS: &str = ".bmp, .png, .pfm, .exr";
 
 impl Format {
     fn from_path(path: &Path) -> Result<Format, String> {
@@ -53,6 +55,7 @@ impl Format {
             Some("bmp") => Ok(Format::Bmp),
             Some("png") => Ok(Format::Png),
             Some("pfm") => Ok(Format::Pfm),
+            Some("exr") => Ok(Format::Exr),
             Some(other) => Err(format!(
                 "{}: unsupported image extension '.{other}' (supported: {SUPPORTED_EXTENSIONS})",
                 path.display()
@@ -110,7 +113,8 @@ fn validate(path: &Path, image: &Image) -> Result<(), String> {
 
 /// Writes `image` to `path`, the format chosen by the extension (`.bmp`, `.png`:
 /// each channel clamped to [0, 1], raised to `1/gamma` when `gamma` is given,
-/// scaled by 255; `.pfm`: linear radiance). The file appears whole or not at all.
+/// scaled by 255; `.pfm` and `.exr`: linear radiance). The file appears whole
+/// or not at all.
 pub fn write_image(path: &Path, image: &Image, gamma: Option<f64>) -> Result<(), String> {
     let format = Format::from_path(path)?;
     validate(path, image)?;
@@ -118,12 +122,14 @@ pub fn write_image(path: &Path, image: &Image, gamma: Option<f64>) -> Result<(),
         Format::Bmp => bmp_format::encode(image, gamma),
         Format::Png => png_format::encode(image, gamma),
         Format::Pfm => Ok(pfm::encode(image)),
+        Format::Exr => exr_format::encode(image),
     }
     .map_err(|e| format!("{}: {e}", path.display()))?;
     atomic::write_file(path, &bytes)
 }
 
-/// Reads a BMP, PNG or PFM image (LDR values mapped to [0, 1] without gamma).
+/// Reads a BMP, PNG, PFM or EXR image (LDR values mapped to [0, 1] without
+/// gamma; HDR values as stored).
 ///
 /// The format is recognised by the file's content, not its extension. JPEG and
 /// TGA files are read too. PFM values are returned as stored (linear).

@@ -114,6 +114,20 @@ fn pfm_round_trip_is_exact_including_hdr_and_orientation() {
 }
 
 #[test]
+fn exr_round_trip_keeps_hdr_values_and_orientation() {
+    let directory = ScratchDirectory::new("exr-round-trip");
+    let path = directory.join("radiance.exr");
+    let mut image = gradient();
+    image.pixels[0] = Color::new(1234.5, 0.25, 1e-3);
+    image.pixels[34] = Color::new(0.1, 0.2, 0.3);
+    for p in &mut image.pixels {
+        *p = p.map(|c| c as f32 as f64);
+    }
+    write_image(&path, &image, None).unwrap();
+    assert_eq!(read_image(&path).unwrap(), image);
+}
+
+#[test]
 fn pfm_file_stores_rows_bottom_to_top() {
     let directory = ScratchDirectory::new("pfm-layout");
     let path = directory.join("two.pfm");
@@ -205,13 +219,13 @@ fn malformed_pfm_files_give_errors_not_panics() {
 #[test]
 fn unsupported_extension_fails_without_touching_anything() {
     let directory = ScratchDirectory::new("bad-extension");
-    let path = directory.join("image.exr");
+    let path = directory.join("image.tiff");
     fs::write(&path, b"keep me").unwrap();
     let error = write_image(&path, &gradient(), None).unwrap_err();
-    assert!(error.contains(".bmp, .png, .pfm"), "{error}");
+    assert!(error.contains(".bmp, .png, .pfm, .exr"), "{error}");
     assert!(write_image(&directory.join("noextension"), &gradient(), None).is_err());
     assert_eq!(fs::read(&path).unwrap(), b"keep me");
-    assert_eq!(directory.entries(), vec!["image.exr"]);
+    assert_eq!(directory.entries(), vec!["image.tiff"]);
 }
 
 #[test]
