@@ -109,21 +109,8 @@ impl Aabb {
         t_min: f64,
         t_max: f64,
     ) -> Option<f64> {
-        let mut near = t_min;
-        let mut far = t_max;
-        for axis in 0..3 {
-            let t0 = (self.min[axis] - origin[axis]) * inverse_direction[axis];
-            let t1 = (self.max[axis] - origin[axis]) * inverse_direction[axis];
-            let (lo, hi) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
-            // NaN (0 * inf) comparisons fall through and keep the previous bound.
-            if lo > near {
-                near = lo;
-            }
-            if hi < far {
-                far = hi;
-            }
-        }
-        if near <= far { Some(near) } else { None }
+        self.clip(origin, inverse_direction, t_min, t_max)
+            .map(|(near, _)| near)
     }
 
     /// Slab test returning the clipped parameter interval `(near, far)` of the ray
@@ -142,6 +129,7 @@ impl Aabb {
             let t0 = (self.min[axis] - origin[axis]) * inverse_direction[axis];
             let t1 = (self.max[axis] - origin[axis]) * inverse_direction[axis];
             let (lo, hi) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
+            // NaN (0 * inf) comparisons fall through and keep the previous bound.
             if lo > near {
                 near = lo;
             }
