@@ -328,6 +328,24 @@ fn emissive_rectangle() -> Scene {
     common::scene_with(materials, Object::Group(objects))
 }
 
+/// (f) A sphere light sunk into the ceiling, as smallpt and the coursework
+/// scenes have it: light sampling takes the cap below the plane.
+fn light_sunk_into_the_ceiling() -> Scene {
+    let mut materials = box_materials();
+    materials.push(emitter(12.0)); // 3
+    materials.push(Material {
+        color: Color::gray(0.9),
+        diffuse: 0.0,
+        refract: 1.0,
+        ..Material::default()
+    }); // 4
+    let mut objects = box_walls();
+    objects.push(sphere(Vec3::new(0.3, 2.7, -5.0), 0.9, 3));
+    objects.push(sphere(Vec3::new(-0.8, -1.4, -5.0), 0.6, 0));
+    objects.push(sphere(Vec3::new(0.9, -1.4, -4.0), 0.6, 4));
+    common::scene_with(materials, Object::Group(objects))
+}
+
 #[test]
 fn spheres_with_mirror_and_glass_agree_and_path_is_less_noisy() {
     let ratio = assert_agree("(a) spheres", &cornell_spheres(), 64);
@@ -355,4 +373,13 @@ fn point_and_directional_lights_agree() {
 #[test]
 fn emissive_rectangle_disk_and_ellipsoid_agree() {
     assert_agree("(e) rectangle", &emissive_rectangle(), 64);
+}
+
+#[test]
+fn light_sunk_into_the_ceiling_agrees_and_path_is_less_noisy() {
+    let ratio = assert_agree("(f) sunk light", &light_sunk_into_the_ceiling(), 64);
+    assert!(
+        ratio >= 3.0,
+        "path is only {ratio:.2}x less noisy than original"
+    );
 }

@@ -10,6 +10,7 @@
 
 use std::f64::consts::PI;
 
+use super::cut::{Cap, Cuts};
 use crate::camera::concentric_disk;
 use crate::math::{Point3, Vec3, orthonormal_basis};
 
@@ -23,11 +24,13 @@ const SPHERE_SURFACE_MARGIN: f64 = 1e-6;
 
 #[derive(Clone, Copy, Debug)]
 pub enum EmitterShape {
-    /// A sphere whose centre is `center + motion * time`.
+    /// A sphere whose centre is `center + motion * time`, cut by the planes
+    /// of `cuts` (none for a moving sphere).
     Sphere {
         center: Point3,
         motion: Vec3,
         radius: f64,
+        cuts: Cuts,
     },
     Triangle {
         vertices: [Point3; 3],
@@ -79,7 +82,8 @@ impl EmitterShape {
                 center,
                 motion,
                 radius,
-            } => sample_sphere(&(center + motion * time), radius, reference, u),
+                cuts,
+            } => sample_sphere(&(center + motion * time), radius, &cuts, reference, u),
             _ => {
                 let (point, normal) = self.sample_area(time, u);
                 from_area_sample(reference, &point, &normal, self.area())
@@ -96,10 +100,20 @@ impl EmitterShape {
                 center,
                 motion,
                 radius,
+                cuts,
             } => {
                 let center = center + motion * time;
                 match cone(&center, radius, reference) {
-                    Some(cone) => cone.pdf,
+                    Some(cone) => match cuts.cap(&center, radius, reference) {
+                        Some(cap) => {
+                            if cap.contains(&((point - center) / radius)) {
+                                area_to_solid_angle(reference, point, normal, cap.area(radius))
+                            } else {
+                                0.0
+                            }
+                        }
+                        None => cone.pdf,
+                    },
                     None => {
                         area_to_solid_angle(reference, point, normal, 4.0 * PI * radius * radius)
                     }
@@ -144,6 +158,7 @@ impl EmitterShape {
                 center,
                 motion,
                 radius,
+                ..
             } => {
                 let normal = uniform_sphere(u);
                 (center + motion * time + normal * radius, normal)
@@ -188,6 +203,7 @@ fn cone(center: &Point3, radius: f64, reference: &Point3) -> Option<Cone> {
 fn sample_sphere(
     center: &Point3,
     radius: f64,
+    cuts: &Cuts,
     reference: &Point3,
     u: [f64; 2],
 ) -> Option<ShapeSample> {
@@ -196,6 +212,9 @@ fn sample_sphere(
         let point = center + normal * radius;
         return from_area_sample(reference, &point, &normal, 4.0 * PI * radius * radius);
     };
+    if let Some(cap) = cuts.cap(center, radius, reference) {
+        return sample_cap(center, radius, &cap, reference, u);
+    }
     // cos(theta) uniform in [cos_max, 1].
     let one_minus_cos = u[0] * cone.one_minus_cos_max;
     let cos_theta = 1.0 - one_minus_cos;
@@ -220,6 +239,23 @@ fn sample_sphere(
         distance,
         pdf: cone.pdf,
     })
+}
+
+/// A uniform point of `cap` as seen from `reference` outside the sphere; the
+/// points facing away from it (hidden by the sphere itself) are dropped.
+fn sample_cap(
+    center: &Point3,
+    radius: f64,
+    cap: &Cap,
+    reference: &Point3,
+    u: [f64; 2],
+) -> Option<ShapeSample> {
+    let normal = cap.sample(u);
+    let point = center + normal * radius;
+    if normal.dot(&(reference - point)) <= 0.0 {
+        return None;
+    }
+    from_area_sample(reference, &point, &normal, cap.area(radius))
 }
 
 /// A uniformly chosen area point turned into a direction with its solid-angle density.

@@ -10,8 +10,10 @@
 //! emitting disks and parallelograms in the world (the scene builder makes
 //! them), so they are sampled like any other. The PA1 point and directional
 //! lights are not in this table: both integrators add them in
-//! `integrator::lights`.
+//! `integrator::lights`. A static sphere light cut by infinite planes is
+//! sampled on the cap on the shading point's side (`cut`).
 
+pub mod cut;
 pub mod distribution;
 pub mod emitter;
 
@@ -24,6 +26,7 @@ use crate::math::{Point3, Vec3, orthonormal_basis, transform_point, transform_ve
 use crate::scene::model::Scene;
 use crate::world::{Primitive, World, WorldHit};
 
+pub use cut::{CutPlane, Cuts};
 pub use distribution::Distribution;
 pub use emitter::{EmitterShape, ShapeSample};
 
@@ -65,6 +68,7 @@ impl Emitters {
     pub fn build(scene: &Scene, world: &World) -> Emitters {
         let mut entries = Vec::new();
         let mut first_entry = vec![NONE; world.primitives().len()];
+        let planes: Vec<CutPlane> = world.primitives().iter().filter_map(world_plane).collect();
         for (index, primitive) in world.primitives().iter().enumerate() {
             let Some(material) = scene.materials.get(primitive.material) else {
                 continue;
@@ -73,7 +77,7 @@ impl Emitters {
                 continue;
             }
             let start = entries.len();
-            push_shapes(primitive, &mut |shape| {
+            push_shapes(primitive, &planes, &mut |shape| {
                 entries.push(Emitter {
                     shape,
                     emission: material.emission,
@@ -146,8 +150,30 @@ impl Emitters {
     }
 }
 
-/// The world-space sampling shapes of a primitive (none when it cannot be sampled).
-fn push_shapes(primitive: &Primitive, push: &mut dyn FnMut(EmitterShape)) {
+/// The world-space plane of a plane primitive.
+fn world_plane(primitive: &Primitive) -> Option<CutPlane> {
+    let Shape::Plane(plane) = &primitive.shape else {
+        return None;
+    };
+    let (normal, offset) = match primitive.transform.as_deref() {
+        None => (plane.normal, plane.offset),
+        Some(t) => {
+            // n . p = d with p = A^-1 (q - t): (A^-T n) . q = d + (A^-T n) . t.
+            let normal = t.normal_matrix * plane.normal;
+            let translation = Vec3::new(t.matrix[(0, 3)], t.matrix[(1, 3)], t.matrix[(2, 3)]);
+            (normal, plane.offset + normal.dot(&translation))
+        }
+    };
+    let length = normal.norm();
+    (length > 0.0 && length.is_finite() && offset.is_finite()).then(|| CutPlane {
+        normal: normal / length,
+        offset: offset / length,
+    })
+}
+
+/// The world-space sampling shapes of a primitive (none when it cannot be
+/// sampled); `planes` are the world's infinite planes, which may cut spheres.
+fn push_shapes(primitive: &Primitive, planes: &[CutPlane], push: &mut dyn FnMut(EmitterShape)) {
     let transform = primitive.transform.as_deref();
     let point = |p: &Point3| match transform {
         Some(t) => transform_point(&t.matrix, p),
@@ -166,10 +192,19 @@ fn push_shapes(primitive: &Primitive, push: &mut dyn FnMut(EmitterShape)) {
                     None => return,
                 },
             };
+            let center = point(&sphere.center);
+            let motion = vector(&sphere.motion);
+            let radius = sphere.radius * scale;
+            let cuts = if motion == Vec3::zeros() {
+                Cuts::new(&center, radius, planes)
+            } else {
+                Cuts::NONE
+            };
             push(EmitterShape::Sphere {
-                center: point(&sphere.center),
-                motion: vector(&sphere.motion),
-                radius: sphere.radius * scale,
+                center,
+                motion,
+                radius,
+                cuts,
             });
         }
         Shape::Triangle(triangle) => push(EmitterShape::Triangle {

@@ -92,6 +92,7 @@ fn densities_are_consistent_and_cover_the_visible_solid_angle() {
                 center,
                 motion: Vec3::zeros(),
                 radius: 0.5,
+                cuts: Cuts::NONE,
             },
             Shape::Sphere(Sphere::new(center, 0.5, Vec3::zeros())),
         ),
@@ -112,6 +113,7 @@ fn sphere_seen_from_inside_or_its_surface_covers_all_directions() {
         center: Point3::zeros(),
         motion: Vec3::zeros(),
         radius: 2.0,
+        cuts: Cuts::NONE,
     };
     for reference in [Point3::new(0.3, -1.0, 0.5), Point3::new(0.0, 2.0, 0.0)] {
         let omega = sampled_solid_angle(&sphere, &reference, 200_000);
@@ -128,6 +130,7 @@ fn tiny_distant_sphere_has_the_small_cone_density() {
         center: Point3::new(0.0, 0.0, 1e4),
         motion: Vec3::zeros(),
         radius: 1e-3,
+        cuts: Cuts::NONE,
     };
     let s = sphere.sample(&Point3::zeros(), 0.0, [0.3, 0.7]).unwrap();
     let want = 1.0 / (PI * 1e-14); // 1 / (pi (r/d)^2) in the small-angle limit
@@ -230,4 +233,67 @@ fn world_hits_find_the_density_their_light_sample_had() {
     let hit = world.intersect(&ellipsoid, 0.0, f64::INFINITY).unwrap();
     assert_eq!(hit.primitive, 2);
     assert_eq!(emitters.pdf(&reference, 0.0, &hit), 0.0);
+}
+
+#[test]
+fn sphere_cut_by_a_plane_is_sampled_on_the_reachable_cap() {
+    use crate::scene::model::Material;
+    let emissive = Material {
+        emission: Color::gray(1.0),
+        ..Material::default()
+    };
+    // A ceiling at y = 1 with a radius-1 light sunk into it: 0.2 hangs below.
+    let root = Object::Group(vec![
+        Object::Plane {
+            normal: Vec3::y(),
+            offset: 1.0,
+            material: 0,
+        },
+        Object::Sphere {
+            center: Point3::new(0.3, 1.8, -2.0),
+            radius: 1.0,
+            motion: Vec3::zeros(),
+            material: 1,
+        },
+    ]);
+    let scene = scene(vec![Material::default(), emissive], root);
+    let world = World::build(&scene);
+    let emitters = Emitters::build(&scene, &world);
+    let mut rng = Rng::new(11, 12);
+    for reference in [Point3::new(0.0, -1.0, 0.0), Point3::new(2.5, 0.9, -1.0)] {
+        // Every light sample reaches the light, with the density of its hit.
+        let n = 20_000;
+        let mut sampled = 0.0;
+        for _ in 0..n {
+            let u = [rng.next_f64(), rng.next_f64()];
+            let Some(light) = emitters.sample(&reference, 0.0, rng.next_f64(), u) else {
+                continue;
+            };
+            let ray = Ray::new(reference, light.direction, 0.0);
+            let hit = world.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+            assert_eq!(hit.primitive, 1, "a cap sample behind the ceiling");
+            assert!((hit.t - light.distance).abs() < 1e-9 * light.distance);
+            let pdf = emitters.pdf(&reference, 0.0, &hit);
+            assert!(
+                (pdf - light.pdf).abs() < 1e-6 * light.pdf,
+                "{pdf} vs {}",
+                light.pdf
+            );
+            sampled += 1.0 / light.pdf / n as f64;
+        }
+        // ... and the samples cover the solid angle in which the light is seen.
+        let m = 400_000;
+        let seen = (0..m)
+            .filter(|_| {
+                let d = uniform_sphere([rng.next_f64(), rng.next_f64()]);
+                let hit = world.intersect(&Ray::new(reference, d, 0.0), 0.0, f64::INFINITY);
+                hit.is_some_and(|h| h.primitive == 1)
+            })
+            .count();
+        let seen = 4.0 * PI * seen as f64 / m as f64;
+        assert!(
+            (sampled - seen).abs() < 0.05 * seen,
+            "{reference:?}: sampled {sampled} vs seen {seen}"
+        );
+    }
 }
