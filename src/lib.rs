@@ -27,4 +27,5 @@ pub mod sampling;
 pub mod scene;
 pub mod shading;
 pub mod texture;
+pub mod trig;
 pub mod world;

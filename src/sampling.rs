@@ -1,16 +1,15 @@
 //! Direction sampling and the small optics formulas of the original estimator.
 
-use std::f64::consts::PI;
-
 use crate::math::{Vec3, orthonormal_basis};
+use crate::trig::sin_cos_turns;
 
 /// A cosine-weighted direction about the unit normal `n` (pdf = cos / pi).
 pub fn cosine_hemisphere(n: &Vec3, u: [f64; 2]) -> Vec3 {
-    let phi = 2.0 * PI * u[0];
+    let (sin, cos) = sin_cos_turns(u[0]);
     let r2 = u[1];
     let r = r2.sqrt();
     let (t, b) = orthonormal_basis(n);
-    (t * (phi.cos() * r) + b * (phi.sin() * r) + n * (1.0 - r2).max(0.0).sqrt()).normalize()
+    (t * (cos * r) + b * (sin * r) + n * (1.0 - r2).max(0.0).sqrt()).normalize()
 }
 
 /// Mirror reflection of the incoming direction `d` about `n`.

@@ -14,6 +14,7 @@
 use std::f64::consts::PI;
 
 use crate::math::{Point3, Vec3, orthonormal_basis};
+use crate::trig::sin_cos_turns;
 
 /// Planes kept per sphere (the deepest cuts: the smallest caps).
 pub const MAX_CUTS: usize = 2;
@@ -116,9 +117,9 @@ impl Cap {
     pub fn sample(&self, u: [f64; 2]) -> Vec3 {
         let z = 1.0 - u[0] * (1.0 - self.min_cos);
         let r = (1.0 - z * z).max(0.0).sqrt();
-        let phi = 2.0 * PI * u[1];
+        let (sin, cos) = sin_cos_turns(u[1]);
         let (t, b) = orthonormal_basis(&self.axis);
-        t * (r * phi.cos()) + b * (r * phi.sin()) + self.axis * z
+        t * (r * cos) + b * (r * sin) + self.axis * z
     }
 
     /// Whether the unit direction `w` from the centre lies in the cap.

@@ -13,6 +13,7 @@ use std::f64::consts::PI;
 use super::cut::{Cap, Cuts};
 use crate::camera::concentric_disk;
 use crate::math::{Point3, Vec3, orthonormal_basis};
+use crate::trig::sin_cos_turns;
 
 /// Below this `|cos|` at the light, a sampled point is dropped (the density
 /// in solid angle would be unbounded; such points carry no energy anyway).
@@ -219,11 +220,10 @@ fn sample_sphere(
     let one_minus_cos = u[0] * cone.one_minus_cos_max;
     let cos_theta = 1.0 - one_minus_cos;
     let sin_theta = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0).sqrt();
-    let phi = 2.0 * PI * u[1];
+    let (sin_phi, cos_phi) = sin_cos_turns(u[1]);
     let (t, b) = orthonormal_basis(&cone.axis);
     let direction =
-        (t * (sin_theta * phi.cos()) + b * (sin_theta * phi.sin()) + cone.axis * cos_theta)
-            .normalize();
+        (t * (sin_theta * cos_phi) + b * (sin_theta * sin_phi) + cone.axis * cos_theta).normalize();
     // Nearest intersection along the direction: d cos - sqrt(r^2 - d^2 sin^2).
     let d = cone.distance;
     let perpendicular2 = d * d * sin_theta * sin_theta;
@@ -299,6 +299,6 @@ fn area_to_solid_angle(reference: &Point3, point: &Point3, normal: &Vec3, area: 
 pub(super) fn uniform_sphere(u: [f64; 2]) -> Vec3 {
     let z = 1.0 - 2.0 * u[0];
     let r = (1.0 - z * z).max(0.0).sqrt();
-    let phi = 2.0 * PI * u[1];
-    Vec3::new(r * phi.cos(), r * phi.sin(), z)
+    let (sin, cos) = sin_cos_turns(u[1]);
+    Vec3::new(r * cos, r * sin, z)
 }
