@@ -6,9 +6,13 @@
 
 use crate::math::{Aabb, Ray, inverse_direction};
 
-/// Size of the fixed traversal stack. The build never makes a tree deeper than
+/// Size of the largest traversal stack. The build never makes a tree deeper than
 /// this, so traversal cannot overflow it.
 const STACK_SIZE: usize = 64;
+/// Stack sizes for shallower trees: a traversal zeroes its whole stack, which
+/// for the 64 entries of a deep tree costs as much as a few box tests.
+const SMALL_STACK: usize = 8;
+const MEDIUM_STACK: usize = 32;
 /// Deepest level the build may create (leaves are forced below it).
 const MAX_DEPTH: usize = STACK_SIZE - 4;
 /// Number of SAH bins per axis.
@@ -34,6 +38,9 @@ struct Node {
 pub struct Bvh {
     nodes: Vec<Node>,
     indices: Vec<u32>,
+    /// Levels below the root of the deepest leaf: a traversal stack of
+    /// `depth + 1` entries cannot overflow.
+    depth: usize,
 }
 
 struct BuildItem {
@@ -61,6 +68,7 @@ impl Bvh {
         let mut bvh = Bvh {
             nodes: Vec::with_capacity(2 * items.len().max(1)),
             indices: Vec::with_capacity(items.len()),
+            depth: 0,
         };
         if !items.is_empty() {
             bvh.build_node(&mut items, 0);
@@ -98,6 +106,7 @@ impl Bvh {
             choose_split(items, &bounds)
         };
         let Some(mid) = split else {
+            self.depth = self.depth.max(depth);
             self.make_leaf(node_index, items);
             return node_index;
         };
@@ -118,7 +127,28 @@ impl Bvh {
     /// returns the distance of a hit closer than `t_max`, which then becomes the
     /// new `t_max`. Returns the final `t_max` (unchanged if nothing was hit).
     #[inline]
-    pub fn traverse<F>(&self, ray: &Ray, t_min: f64, mut t_max: f64, mut leaf: F) -> f64
+    pub fn traverse<F>(&self, ray: &Ray, t_min: f64, t_max: f64, leaf: F) -> f64
+    where
+        F: FnMut(usize, f64) -> Option<f64>,
+    {
+        if self.depth < SMALL_STACK {
+            self.traverse_with::<SMALL_STACK, F>(ray, t_min, t_max, leaf)
+        } else if self.depth < MEDIUM_STACK {
+            self.traverse_with::<MEDIUM_STACK, F>(ray, t_min, t_max, leaf)
+        } else {
+            self.traverse_with::<STACK_SIZE, F>(ray, t_min, t_max, leaf)
+        }
+    }
+
+    /// [`Bvh::traverse`] with a stack of `N > depth` entries.
+    #[inline]
+    fn traverse_with<const N: usize, F>(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        mut t_max: f64,
+        mut leaf: F,
+    ) -> f64
     where
         F: FnMut(usize, f64) -> Option<f64>,
     {
@@ -134,7 +164,7 @@ impl Bvh {
         {
             return t_max;
         }
-        let mut stack = [(0u32, 0.0f64); STACK_SIZE];
+        let mut stack = [(0u32, 0.0f64); N];
         let mut top = 0usize;
         let mut current = 0usize;
         loop {
@@ -195,7 +225,24 @@ impl Bvh {
 
     /// Any-hit traversal: true as soon as `leaf(index)` reports a hit.
     #[inline]
-    pub fn any<F>(&self, ray: &Ray, t_min: f64, t_max: f64, mut leaf: F) -> bool
+    pub fn any<F>(&self, ray: &Ray, t_min: f64, t_max: f64, leaf: F) -> bool
+    where
+        F: FnMut(usize) -> bool,
+    {
+        // Pushing both children of each node on a path keeps at most
+        // `depth + 1` entries.
+        if self.depth < SMALL_STACK {
+            self.any_with::<SMALL_STACK, F>(ray, t_min, t_max, leaf)
+        } else if self.depth < MEDIUM_STACK {
+            self.any_with::<MEDIUM_STACK, F>(ray, t_min, t_max, leaf)
+        } else {
+            self.any_with::<STACK_SIZE, F>(ray, t_min, t_max, leaf)
+        }
+    }
+
+    /// [`Bvh::any`] with a stack of `N > depth` entries.
+    #[inline]
+    fn any_with<const N: usize, F>(&self, ray: &Ray, t_min: f64, t_max: f64, mut leaf: F) -> bool
     where
         F: FnMut(usize) -> bool,
     {
@@ -204,7 +251,7 @@ impl Bvh {
         }
         let inverse = inverse_direction(&ray.direction);
         let origin = ray.origin;
-        let mut stack = [0u32; STACK_SIZE];
+        let mut stack = [0u32; N];
         let mut top = 1usize;
         while top > 0 {
             top -= 1;
