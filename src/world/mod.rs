@@ -231,7 +231,9 @@ mod tests {
     use super::*;
 
     use crate::math::Matrix;
-    use crate::scene::model::MeshData;
+    use std::sync::Arc;
+
+    use crate::scene::model::{MeshData, Object};
 
     fn scene(root: Object) -> Scene {
         Scene::new(Vec::new(), root)
@@ -301,6 +303,84 @@ mod tests {
         assert!(world.occluded(&down, 0.0, 2.0));
         assert!(!world.occluded(&down, 0.0, 0.5));
         assert!((world.bounds().max.x - 11.0).abs() < 1e-12);
+    }
+
+    /// Spheres (some moving, some transformed), triangles and planes.
+    fn random_primitives(rng: &mut crate::rng::Rng, count: usize) -> Vec<Primitive> {
+        use crate::geometry::{Plane, Sphere, Triangle};
+        let mut point = |scale: f64| {
+            Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * scale
+                - Vec3::repeat(scale / 2.0)
+        };
+        let mut primitives = Vec::new();
+        for i in 0..count {
+            let center = point(10.0);
+            let (shape, transform) = match i % 4 {
+                0 => (Shape::Sphere(Sphere::new(center, 1.0, Vec3::zeros())), None),
+                1 => (Shape::Sphere(Sphere::new(center, 0.5, point(2.0))), None),
+                2 => {
+                    let matrix = Matrix::new_translation(&center) * Matrix::new_scaling(0.7);
+                    let inverse = matrix.try_inverse().expect("invertible");
+                    let sphere = Sphere::new(Point3::zeros(), 1.0, Vec3::zeros());
+                    let transform = Box::new(crate::geometry::Transform::new(matrix, inverse));
+                    (Shape::Sphere(sphere), Some(transform))
+                }
+                _ => {
+                    let triangle =
+                        Triangle::new([center, center + point(3.0), center + point(3.0)]);
+                    (Shape::Triangle(triangle), None)
+                }
+            };
+            primitives.push(Primitive {
+                shape,
+                transform,
+                material: i,
+            });
+        }
+        for axis in 0..3 {
+            let mut normal = Vec3::zeros();
+            normal[axis] = 1.0;
+            let plane = Plane::new(normal, 8.0).expect("valid plane");
+            primitives.push(Primitive {
+                shape: Shape::Plane(plane),
+                transform: None,
+                material: 100 + axis,
+            });
+        }
+        primitives
+    }
+
+    #[test]
+    fn small_and_large_worlds_equal_brute_force() {
+        let mut rng = crate::rng::Rng::new(11, 12);
+        // 6 bounded primitives: tested linearly; 40: through the BVH.
+        for count in [6, 40] {
+            let world = World::from_primitives(random_primitives(&mut rng, count));
+            assert_eq!(world.bounded.is_empty(), count <= LINEAR_LIMIT);
+            let mut hits = 0;
+            for _ in 0..3000 {
+                let origin = Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 12.0
+                    - Vec3::repeat(6.0);
+                let direction =
+                    Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) - Vec3::repeat(0.5);
+                let ray = Ray::new(origin, direction.normalize(), rng.next_f64());
+                let t_max = 4.0 + 20.0 * rng.next_f64();
+                let brute = world
+                    .primitives()
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(i, p)| p.intersect(&ray, 0.0, t_max).map(|hit| (i, hit.t)))
+                    .min_by(|a, b| a.1.total_cmp(&b.1));
+                let found = world.intersect(&ray, 0.0, t_max);
+                assert_eq!(found.map(|h| h.primitive), brute.map(|b| b.0));
+                if let (Some(hit), Some((_, t))) = (found, brute) {
+                    assert!((hit.t - t).abs() <= 1e-9 * t.max(1.0));
+                    hits += 1;
+                }
+                assert_eq!(world.occluded(&ray, 0.0, t_max), brute.is_some());
+            }
+            assert!(hits > 500, "{hits} hits of 3000");
+        }
     }
 
     #[test]

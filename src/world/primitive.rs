@@ -1,0 +1,59 @@
+//! One shape of the world with its material and optional transform: the
+//! object-space queries moved to world space.
+
+use crate::geometry::{Intersection, Shape, SurfaceHit, Transform};
+use crate::math::{Aabb, Ray};
+
+/// One shape with its material and optional object-to-world transform.
+#[derive(Clone, Debug)]
+pub struct Primitive {
+    pub shape: Shape,
+    /// `None` for the identity.
+    pub transform: Option<Box<Transform>>,
+    pub material: usize,
+}
+
+impl Primitive {
+    #[inline]
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
+        match &self.transform {
+            None => self.shape.intersect(ray, t_min, t_max),
+            Some(transform) => self
+                .shape
+                .intersect(&transform.ray_to_object(ray), t_min, t_max),
+        }
+    }
+
+    #[inline]
+    pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        match &self.transform {
+            None => self.shape.occluded(ray, t_min, t_max),
+            Some(transform) => self
+                .shape
+                .occluded(&transform.ray_to_object(ray), t_min, t_max),
+        }
+    }
+
+    /// The world-space surface of a hit found by [`Primitive::intersect`]
+    /// (uv and tangent only `with_uv`, see [`Shape::surface`]).
+    pub fn surface(&self, ray: &Ray, hit: &Intersection, with_uv: bool) -> SurfaceHit {
+        match &self.transform {
+            None => self.shape.surface(ray, hit, with_uv),
+            Some(transform) => {
+                let local = self
+                    .shape
+                    .surface(&transform.ray_to_object(ray), hit, with_uv);
+                transform.surface_to_world(&local)
+            }
+        }
+    }
+
+    /// World-space bounds; `None` when unbounded.
+    pub fn bounds(&self) -> Option<Aabb> {
+        let local = self.shape.bounds()?;
+        Some(match &self.transform {
+            None => local,
+            Some(transform) => transform.bounds_to_world(&local),
+        })
+    }
+}
