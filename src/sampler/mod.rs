@@ -17,7 +17,7 @@ pub mod sobol;
 mod tests;
 
 use crate::rng::{Rng, mix64};
-use owen::nested_uniform_scramble;
+use owen::{laine_karras_permutation, laine_karras_permutation4};
 
 /// Which sample generator a render uses.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -99,30 +99,49 @@ fn group_seed(pixel_seed: u64, group: u32, sample_index: u64) -> u64 {
     mix64(pixel_seed ^ mix64((index_block << 32) | group as u64))
 }
 
-/// The scrambled values of the four dimensions of a group for one shuffled
-/// Sobol' index, as 53-bit binary fractions.
-fn group_values(group_seed: u64, shuffled_index: u32) -> [u64; sobol::DIMENSIONS] {
-    let points = sobol::sobol_all(shuffled_index);
+/// The scrambled values of the four dimensions of a group for one sample, as
+/// 53-bit binary fractions.
+///
+/// The sample index is shuffled by a nested uniform scramble (seeded by the
+/// group), the four Sobol' points of the shuffled index are each
+/// Owen-scrambled with their own seed. Both scrambles work on bit-reversed
+/// values, and the reversed Sobol' tables go from a reversed index to
+/// reversed points, so only the index and the four results are reversed.
+fn group_values(group_seed: u64, sample_index: u64) -> [u64; sobol::DIMENSIONS] {
+    let reversed_shuffled =
+        laine_karras_permutation((sample_index as u32).reverse_bits(), group_seed as u32);
+    let reversed_points = sobol::sobol_all_reversed(reversed_shuffled);
+    let seeds = dimension_seeds(group_seed);
+    let scrambled = laine_karras_permutation4(reversed_points, seeds);
     std::array::from_fn(|dimension| {
-        // A cheap per-dimension variant of the (already well mixed) group seed.
-        let dimension_seed = (group_seed
-            ^ (dimension as u64 + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15))
-        .wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        let dimension_seed = dimension_seed ^ (dimension_seed >> 31);
-        let scrambled = nested_uniform_scramble(points[dimension], dimension_seed as u32);
+        let value = scrambled[dimension].reverse_bits();
         // Owen scrambling randomises every digit; the 21 digits below the 32
         // generated ones are drawn from a hash of the scrambled prefix.
-        let low = (dimension_seed ^ scrambled as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 43;
-        ((scrambled as u64) << 21) | low
+        let low = (value ^ seeds[dimension]).wrapping_mul(0x9E37_79B9) >> 11;
+        ((value as u64) << 21) | low as u64
     })
 }
 
-fn to_unit(bits: u64) -> f64 {
-    bits as f64 * (1.0 / (1u64 << 53) as f64)
+/// The scrambling seeds of a group's four dimensions: a 32-bit hash
+/// (Wellons' lowbias32) of the group seed's high half and the dimension.
+fn dimension_seeds(group_seed: u64) -> [u32; sobol::DIMENSIONS] {
+    let high = (group_seed >> 32) as u32;
+    std::array::from_fn(|dimension| {
+        let mut x = high ^ (dimension as u32 + 1).wrapping_mul(0x9E37_79B9);
+        x ^= x >> 16;
+        x = x.wrapping_mul(0x7feb_352d);
+        x ^= x >> 15;
+        x = x.wrapping_mul(0x846c_a68b);
+        x ^ (x >> 16)
+    })
 }
 
-fn shuffle_index(group_seed: u64, sample_index: u64) -> u32 {
-    nested_uniform_scramble(sample_index as u32, group_seed as u32)
+/// A 53-bit binary fraction as an `f64` in `[0, 1)` (through `i64`, which
+/// converts in one instruction; the bits fit).
+#[inline]
+fn to_unit(bits: u64) -> f64 {
+    debug_assert!(bits < 1 << 53);
+    (bits as i64) as f64 * (1.0 / (1u64 << 53) as f64)
 }
 
 /// Dimension `dimension` of sample `sample_index` of pixel `pixel_index`: the
@@ -137,8 +156,7 @@ pub fn sobol_sample(pixel_index: u64, sample_index: u64, dimension: u32, seed: u
     }
     let group = dimension / sobol::DIMENSIONS as u32;
     let group_seed = group_seed(pixel_seed, group, sample_index);
-    let shuffled_index = shuffle_index(group_seed, sample_index);
-    to_unit(group_values(group_seed, shuffled_index)[dimension as usize % sobol::DIMENSIONS])
+    to_unit(group_values(group_seed, sample_index)[dimension as usize % sobol::DIMENSIONS])
 }
 
 /// Dimensions drawn from the scrambled Sobol' sequence; later ones (deep
@@ -200,8 +218,7 @@ impl SobolStream {
         if dimension_in_group == 0 {
             let group = self.dimension / sobol::DIMENSIONS as u32;
             let group_seed = group_seed(self.pixel_seed, group, self.sample_index);
-            let shuffled_index = shuffle_index(group_seed, self.sample_index);
-            self.values = group_values(group_seed, shuffled_index);
+            self.values = group_values(group_seed, self.sample_index);
         }
         self.dimension = self.dimension.wrapping_add(1);
         to_unit(self.values[dimension_in_group])

@@ -13,6 +13,19 @@ pub fn laine_karras_permutation(mut x: u32, seed: u32) -> u32 {
     x
 }
 
+/// [`laine_karras_permutation`] of four values at once, each with its own
+/// seed (written lane by lane so that it compiles to vector code).
+#[inline]
+pub fn laine_karras_permutation4(x: [u32; 4], seed: [u32; 4]) -> [u32; 4] {
+    let mut x: [u32; 4] = std::array::from_fn(|i| x[i].wrapping_add(seed[i]));
+    for constant in [0x6c50_b47c, 0xb82f_1e52, 0xc7af_e638, 0x8d22_f6e6u32] {
+        for lane in &mut x {
+            *lane ^= lane.wrapping_mul(constant);
+        }
+    }
+    x
+}
+
 /// Owen-scrambles the binary fraction `x`: each bit is flipped or kept according
 /// to a hash of the seed and all more significant bits. The map is a bijection
 /// that keeps every elementary interval intact, so it preserves stratification.

@@ -105,6 +105,55 @@ const fn byte_tables() -> [[[u32; DIMENSIONS]; 256]; 4] {
     tables
 }
 
+/// `REVERSED_TABLES[b][x]`: like [`BYTE_TABLES`], but for an index whose bits
+/// come in reversed order and giving bit-reversed values: entry bit `m` of
+/// the reversed index selects `reverse(v[31 - m])`. Owen scrambling works on
+/// bit-reversed values, so a scrambler can go from a reversed index to
+/// reversed points without reversing anything in between.
+static REVERSED_TABLES: [[[u32; DIMENSIONS]; 256]; 4] = reversed_tables();
+
+const fn reversed_tables() -> [[[u32; DIMENSIONS]; 256]; 4] {
+    let mut tables = [[[0u32; DIMENSIONS]; 256]; 4];
+    let mut byte = 0;
+    while byte < 4 {
+        let mut x = 0;
+        while x < 256 {
+            let mut dimension = 0;
+            while dimension < DIMENSIONS {
+                let mut value = 0;
+                let mut bit = 0;
+                while bit < 8 {
+                    if (x >> bit) & 1 == 1 {
+                        let m = byte * 8 + bit;
+                        value ^= DIRECTIONS[dimension][31 - m].reverse_bits();
+                    }
+                    bit += 1;
+                }
+                tables[byte][x][dimension] = value;
+                dimension += 1;
+            }
+            x += 1;
+        }
+        byte += 1;
+    }
+    tables
+}
+
+/// The bit-reversed points of all four dimensions for the index whose
+/// bit-reversal is `reversed_index`: `sobol_all(reversed_index.reverse_bits())`
+/// with each value reversed, in four table lookups.
+#[inline]
+pub fn sobol_all_reversed(reversed_index: u32) -> [u32; DIMENSIONS] {
+    let mut value = [0u32; DIMENSIONS];
+    for (byte, table) in REVERSED_TABLES.iter().enumerate() {
+        let entry = &table[((reversed_index >> (8 * byte)) & 0xff) as usize];
+        for d in 0..DIMENSIONS {
+            value[d] ^= entry[d];
+        }
+    }
+    value
+}
+
 /// The points of all four dimensions for one index (four table lookups).
 #[inline]
 pub fn sobol_all(index: u32) -> [u32; DIMENSIONS] {
@@ -128,6 +177,21 @@ mod tests {
             let all = sobol_all(index);
             for (dimension, value) in all.iter().enumerate() {
                 assert_eq!(*value, sobol(index, dimension));
+            }
+        }
+    }
+
+    #[test]
+    fn reversed_tables_give_reversed_points_of_the_reversed_index() {
+        for index in [0u32, 1, 7, 12345, 0xdead_beef, u32::MAX, 0x8000_0000] {
+            let direct = sobol_all(index);
+            let reversed = sobol_all_reversed(index.reverse_bits());
+            for d in 0..DIMENSIONS {
+                assert_eq!(
+                    reversed[d],
+                    direct[d].reverse_bits(),
+                    "index {index:#x}, dimension {d}"
+                );
             }
         }
     }
