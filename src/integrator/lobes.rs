@@ -47,6 +47,16 @@ impl Lobes {
         self.diffuse + self.specular + self.refract
     }
 
+    /// The lobe when only one has a weight (no choice to make), else `None`.
+    pub fn only(&self) -> Option<Lobe> {
+        match (self.diffuse > 0.0, self.specular > 0.0, self.refract > 0.0) {
+            (true, false, false) => Some(Lobe::Diffuse),
+            (false, true, false) => Some(Lobe::Mirror),
+            (false, false, true) => Some(Lobe::Glass),
+            _ => None,
+        }
+    }
+
     /// One lobe, with probability weight / total; `u` in [0, 1). Weight and
     /// probability cancel but for `total`, which the caller multiplies in.
     pub fn pick(&self, u: f64) -> Lobe {

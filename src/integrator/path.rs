@@ -84,7 +84,12 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
         }
         // The lobe weight over its probability, as in the original.
         throughput *= at.color * lobes.total();
-        let lobe = lobes.pick(sampler.next_f64());
+        // A sample dimension is spent only on a real choice, so that the
+        // stratified dimensions go to directions.
+        let lobe = match lobes.only() {
+            Some(lobe) => lobe,
+            None => lobes.pick(sampler.next_f64()),
+        };
         origin = None;
         let direction = match lobe {
             Lobe::Diffuse => {
@@ -125,7 +130,11 @@ fn light_sample(view: &SceneView, at: &Shading, time: f64, sampler: &mut Sampler
     if view.emitters.is_empty() {
         return Color::BLACK;
     }
-    let select = sampler.next_f64();
+    let select = if view.emitters.len() > 1 {
+        sampler.next_f64()
+    } else {
+        0.5
+    };
     let u = sampler.next_2d();
     let Some(light) = view.emitters.sample(&at.point, time, select, u) else {
         return Color::BLACK;
