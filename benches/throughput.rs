@@ -167,6 +167,7 @@ fn renders(c: &mut Criterion) {
                 sampler: SamplerKind::Sobol,
                 progress: false,
                 clamp: None,
+                light_paths: true,
             };
             let samples = settings.width as u64 * settings.height as u64 * settings.spp as u64;
             group.throughput(Throughput::Elements(samples));

@@ -93,6 +93,73 @@ impl Camera {
     }
 }
 
+/// Where a world point appears on the film, seen from one lens point: what
+/// light tracing needs to connect a vertex to the camera.
+#[derive(Clone, Copy, Debug)]
+pub struct Projection {
+    /// Film position in pixels (`y` up from the bottom edge), as in
+    /// [`Camera::ray`].
+    pub film_x: f64,
+    pub film_y: f64,
+    /// The lens point (the eye) the ray starts from.
+    pub eye: Point3,
+    /// Unit direction from the eye to the point, and the distance.
+    pub direction: Vec3,
+    pub distance: f64,
+    /// Distance from the eye to the canvas along `direction`: camera rays
+    /// start there, so nothing nearer is seen.
+    pub canvas: f64,
+    /// Film area (square pixels) per solid angle at the eye in `direction`.
+    pub film_per_steradian: f64,
+}
+
+impl Camera {
+    /// The projection of `point` through the lens point of the unit-square
+    /// sample `lens` (ignored without depth of field), as [`Camera::ray`]
+    /// would trace it: the ray through the returned film position with the
+    /// same `lens` sample heads for `point`. `None` behind the camera.
+    pub fn project(&self, point: &Point3, lens: [f64; 2]) -> Option<Projection> {
+        let eye = if self.has_lens() {
+            let (a, b) = concentric_disk(lens);
+            self.center + (self.true_up * a + self.right * b) * self.lens_radius
+        } else {
+            self.center
+        };
+        let offset = point - eye;
+        let distance = offset.norm();
+        let direction = offset / distance;
+        let along = direction.dot(&self.direction);
+        if !(distance > 0.0 && along > 1e-12) {
+            return None;
+        }
+        // The unnormalised ray direction `d` (d . direction = 1) whose film
+        // position is wanted: through the focal point on the lens's ray.
+        let d = if self.has_lens() {
+            let focus = eye + direction * (self.focus_distance / along);
+            (focus - self.center) / self.focus_distance
+        } else {
+            direction / along
+        };
+        let span_x = self.plane_x.norm();
+        let span_y = self.plane_y.norm();
+        let film_x = (d.dot(&self.right) / span_x + 0.5) * self.width as f64;
+        let film_y = (d.dot(&self.true_up) / span_y + 0.5) * self.height as f64;
+        // Film pixels per unit area of the plane at distance 1, times that
+        // area per solid angle (1 / cos^3).
+        let film_per_steradian =
+            self.width as f64 * self.height as f64 / (span_x * span_y * along.powi(3));
+        Some(Projection {
+            film_x,
+            film_y,
+            eye,
+            direction,
+            distance,
+            canvas: self.canvas_distance / along,
+            film_per_steradian,
+        })
+    }
+}
+
 fn normalize_or(v: Vec3, fallback: Vec3) -> Vec3 {
     let length = v.norm();
     if length > 0.0 && length.is_finite() {
@@ -151,6 +218,42 @@ mod tests {
         let ray = camera.ray(fx, fy, [0.5, 0.5], 0.0);
         assert!((ray.direction - d.normalize()).norm() < 1e-12);
         assert!((ray.origin - (Vec3::new(50.0, 52.0, 295.6) + d * 140.0)).norm() < 1e-9);
+    }
+
+    #[test]
+    fn projection_inverts_the_camera_ray_with_and_without_lens() {
+        let mut desc = smallpt_desc();
+        for lens_radius in [0.0, 3.0] {
+            desc.lens_radius = lens_radius;
+            desc.focus_distance = 200.0;
+            let camera = Camera::new(&desc, 64, 48);
+            for (fx, fy, lens) in [(10.0, 20.0, [0.1, 0.9]), (50.5, 3.25, [0.7, 0.2])] {
+                let ray = camera.ray(fx, fy, lens, 0.0);
+                let point = ray.at(170.0);
+                let p = camera.project(&point, lens).expect("in front");
+                assert!((p.film_x - fx).abs() < 1e-9 && (p.film_y - fy).abs() < 1e-9);
+                assert!((p.direction - ray.direction).norm() < 1e-12);
+                // The ray starts on the canvas, `canvas` from the eye.
+                assert!((p.eye + p.direction * p.canvas - ray.origin).norm() < 1e-9);
+            }
+        }
+    }
+
+    #[test]
+    fn film_per_steradian_matches_finite_differences() {
+        let camera = Camera::new(&smallpt_desc(), 64, 48);
+        let (fx, fy, h) = (40.0, 10.0, 1e-4);
+        let d = |x: f64, y: f64| camera.ray(x, y, [0.5, 0.5], 0.0).direction;
+        // Solid angle of a small film square: |dw/dx x dw/dy| h^2.
+        let solid_angle = ((d(fx + h, fy) - d(fx, fy)).cross(&(d(fx, fy + h) - d(fx, fy)))).norm();
+        let point = camera.ray(fx, fy, [0.5, 0.5], 0.0).at(100.0);
+        let p = camera.project(&point, [0.5, 0.5]).unwrap();
+        let expected = h * h / solid_angle;
+        assert!(
+            (p.film_per_steradian / expected - 1.0).abs() < 1e-3,
+            "{} vs {expected}",
+            p.film_per_steradian
+        );
     }
 
     #[test]

@@ -1,5 +1,7 @@
 //! Per-pixel accumulation of radiance samples, and the image they average to.
 
+use std::sync::atomic::{AtomicU64, Ordering};
+
 use crate::color::Color;
 use crate::image_io::Image;
 
@@ -73,6 +75,22 @@ impl PixelSum {
     }
 }
 
+/// Light-tracing sums are kept in fixed point with this many fractional
+/// bits: integer sums do not depend on the order of the additions, so an
+/// image stays the same for any thread count.
+const SPLAT_FRACTION_BITS: u32 = 20;
+const SPLAT_SCALE: f64 = (1u64 << SPLAT_FRACTION_BITS) as f64;
+
+/// A splat's channel in fixed point; negative and non-finite values count
+/// as zero, huge ones saturate.
+fn to_fixed(value: f64) -> u64 {
+    if value.is_finite() && value > 0.0 {
+        (value * SPLAT_SCALE).round().min(u64::MAX as f64 / 4.0) as u64
+    } else {
+        0
+    }
+}
+
 /// The sums of every pixel, row-major with row 0 at the top. Renders add to a
 /// film, so that a longer render continues a shorter one.
 #[derive(Clone, Debug)]
@@ -80,6 +98,10 @@ pub struct Film {
     pub width: usize,
     pub height: usize,
     pub pixels: Vec<PixelSum>,
+    /// Light tracing's sums per pixel and channel (fixed point), and the
+    /// number of light subpaths they come from.
+    splats: Vec<[u64; 3]>,
+    light_paths: u64,
 }
 
 impl Film {
@@ -88,15 +110,31 @@ impl Film {
             width,
             height,
             pixels: vec![PixelSum::default(); width * height],
+            splats: vec![[0; 3]; width * height],
+            light_paths: 0,
         }
     }
 
-    /// The average of each pixel's samples.
+    /// Each pixel: the average of its samples plus light tracing's estimate
+    /// (its sums over the number of light subpaths).
     pub fn to_image(&self) -> Image {
+        let light_paths = self.light_paths.max(1) as f64 * SPLAT_SCALE;
         Image {
             width: self.width,
             height: self.height,
-            pixels: self.pixels.iter().map(PixelSum::mean).collect(),
+            pixels: self
+                .pixels
+                .iter()
+                .zip(&self.splats)
+                .map(|(pixel, splat)| {
+                    pixel.mean()
+                        + Color::new(
+                            splat[0] as f64 / light_paths,
+                            splat[1] as f64 / light_paths,
+                            splat[2] as f64 / light_paths,
+                        )
+                })
+                .collect(),
         }
     }
 
@@ -110,6 +148,46 @@ impl Film {
 
     pub fn fireflies(&self) -> u64 {
         self.pixels.iter().map(|p| p.fireflies as u64).sum()
+    }
+}
+
+/// Light tracing's sums of one render pass, added to from every thread.
+pub struct SplatSums {
+    sums: Vec<AtomicU64>,
+    light_paths: AtomicU64,
+}
+
+impl SplatSums {
+    pub fn new(pixels: usize) -> SplatSums {
+        SplatSums {
+            sums: (0..3 * pixels).map(|_| AtomicU64::new(0)).collect(),
+            light_paths: AtomicU64::new(0),
+        }
+    }
+
+    /// Adds `value` to pixel `index` (row-major, row 0 at the top).
+    pub fn add(&self, index: usize, value: Color) {
+        for (channel, v) in [value.r, value.g, value.b].into_iter().enumerate() {
+            if let Some(sum) = self.sums.get(3 * index + channel) {
+                sum.fetch_add(to_fixed(v), Ordering::Relaxed);
+            }
+        }
+    }
+
+    pub fn add_light_paths(&self, count: u64) {
+        if count > 0 {
+            self.light_paths.fetch_add(count, Ordering::Relaxed);
+        }
+    }
+
+    /// Moves the sums into `film`.
+    pub fn add_to(&self, film: &mut Film) {
+        for (pixel, sums) in film.splats.iter_mut().zip(self.sums.chunks_exact(3)) {
+            for (total, sum) in pixel.iter_mut().zip(sums) {
+                *total = total.saturating_add(sum.load(Ordering::Relaxed));
+            }
+        }
+        film.light_paths += self.light_paths.load(Ordering::Relaxed);
     }
 }
 

@@ -26,6 +26,7 @@ pub mod sampler;
 pub mod sampling;
 pub mod scene;
 pub mod shading;
+pub mod subpixel;
 pub mod texture;
 pub mod trig;
 pub mod world;

@@ -9,11 +9,12 @@ use std::time::{Duration, Instant};
 use rayon::prelude::*;
 
 use crate::camera::Camera;
-use crate::film::Film;
+use crate::film::{Film, SplatSums};
 use crate::image_io::Image;
-use crate::integrator::{Integrator, SceneView};
+use crate::integrator::{CameraSample, Integrator, SceneView, Splats};
 use crate::sampler::{Sampler, SamplerKind};
 use crate::scene::model::{Object, Scene};
+use crate::subpixel::film_position;
 use crate::world::World;
 
 #[derive(Clone, Debug)]
@@ -34,6 +35,9 @@ pub struct RenderSettings {
     pub progress: bool,
     /// Scale samples down to this luminance (biased; `None`: off).
     pub clamp: Option<f64>,
+    /// Whether the path integrator traces light subpaths for caustics where
+    /// the scene has any (light tracing and connections).
+    pub light_paths: bool,
 }
 
 /// What a render did.
@@ -84,6 +88,9 @@ pub fn render_into(
     let camera = Camera::new(&scene.camera, width as u32, height as u32);
     let mut view = SceneView::new(scene, world);
     view.max_depth = settings.max_depth;
+    view.camera = Some(camera.clone());
+    view.light_paths &= settings.light_paths;
+    let splat_sums = SplatSums::new(width * height);
     let plan = SamplingPlan::for_scene(scene);
     let before = (film.samples(), film.dropped(), film.fireflies());
     let rows_done = AtomicUsize::new(0);
@@ -106,6 +113,7 @@ pub fn render_into(
                 .enumerate()
                 .for_each(|(row, pixels)| {
                     let y = height - 1 - row;
+                    let mut light_paths = 0u64;
                     for (x, pixel) in pixels.iter_mut().enumerate() {
                         if pixel.converged {
                             continue;
@@ -118,10 +126,17 @@ pub fn render_into(
                                 pixel_index,
                                 sample,
                             };
-                            let value = trace_sample(&view, &camera, plan, settings, context);
+                            let mut splats = Splats::default();
+                            let value =
+                                trace_sample(&view, &camera, plan, settings, context, &mut splats);
                             pixel.add(value, settings.clamp);
+                            for &(sx, sy, splat) in splats.iter() {
+                                splat_sums.add((height - 1 - sy) * width + sx, splat);
+                            }
+                            light_paths += splats.light_paths as u64;
                         }
                     }
+                    splat_sums.add_light_paths(light_paths);
                     rows_done.fetch_add(1, Ordering::Relaxed);
                 });
         });
@@ -129,6 +144,7 @@ pub fn render_into(
     if show_progress {
         eprintln!();
     }
+    splat_sums.add_to(film);
     Ok(RenderStats {
         seconds: start.elapsed().as_secs_f64(),
         samples: film.samples() - before.0,
@@ -155,6 +171,7 @@ fn trace_sample(
     plan: SamplingPlan,
     settings: &RenderSettings,
     at: PixelSample,
+    splats: &mut Splats,
 ) -> crate::color::Color {
     let mut sampler = Sampler::new(
         settings.sampler,
@@ -162,10 +179,7 @@ fn trace_sample(
         at.sample as u64,
         settings.seed,
     );
-    let sub = at.sample % 4;
-    let [jitter_x, jitter_y] = sampler.next_2d();
-    let film_x = at.x as f64 + (0.5 + (sub % 2) as f64 + tent(jitter_x)) * 0.5;
-    let film_y = at.y as f64 + (0.5 + (sub / 2) as f64 + tent(jitter_y)) * 0.5;
+    let (film_x, film_y) = film_position(at.x, at.y, at.sample % 4, sampler.next_2d());
     let lens = if plan.lens {
         sampler.next_2d()
     } else {
@@ -173,18 +187,14 @@ fn trace_sample(
     };
     let time = if plan.time { sampler.next_f64() } else { 0.0 };
     let ray = camera.ray(film_x, film_y, lens, time);
-    settings.integrator.radiance(view, ray, &mut sampler)
-}
-
-/// smallpt's tent filter: maps a uniform number in [0, 1) to an offset in
-/// (-1, 1) with a triangular density.
-pub fn tent(u: f64) -> f64 {
-    let r = 2.0 * u;
-    if r < 1.0 {
-        r.sqrt() - 1.0
-    } else {
-        1.0 - (2.0 - r).sqrt()
-    }
+    let sample = CameraSample {
+        pixel_x: at.x,
+        pixel_y: at.y,
+        lens,
+    };
+    settings
+        .integrator
+        .radiance(view, ray, &sample, &mut sampler, splats)
 }
 
 /// Which sample dimensions a scene needs: a scene pays only for what it uses.
@@ -233,26 +243,5 @@ fn report_progress(rows_done: &AtomicUsize, rows: usize, start: Instant) {
             return;
         }
         std::thread::sleep(Duration::from_millis(250));
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn tent_is_triangular_on_minus_one_to_one() {
-        let n = 100_000;
-        let mut near_zero = 0;
-        for i in 0..n {
-            let d = tent((i as f64 + 0.5) / n as f64);
-            assert!(d > -1.0 && d < 1.0);
-            if d.abs() < 0.5 {
-                near_zero += 1;
-            }
-        }
-        // A triangle on (-1, 1) puts 3/4 of its mass within 1/2 of the centre.
-        let fraction = near_zero as f64 / n as f64;
-        assert!((fraction - 0.75).abs() < 0.001, "{fraction}");
     }
 }

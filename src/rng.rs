@@ -28,6 +28,14 @@ impl Rng {
         Rng::new(state, stream)
     }
 
+    /// A generator for another stream, derived from this one's state and `salt`.
+    pub fn fork(&self, salt: u64) -> Rng {
+        Rng::new(
+            mix64(self.state ^ salt),
+            mix64(self.increment ^ mix64(salt)),
+        )
+    }
+
     pub fn new(state: u64, stream: u64) -> Self {
         let mut rng = Rng {
             state: 0,

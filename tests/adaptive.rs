@@ -71,6 +71,7 @@ fn settings(spp: u32, threads: usize) -> RenderSettings {
         sampler: SamplerKind::Sobol,
         progress: false,
         clamp: None,
+        light_paths: true,
     }
 }
 

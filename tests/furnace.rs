@@ -4,7 +4,7 @@
 mod common;
 
 use pathtracer::color::Color;
-use pathtracer::integrator::{Integrator, SceneView};
+use pathtracer::integrator::{CameraSample, Integrator, SceneView, Splats};
 use pathtracer::math::{Ray, Vec3};
 use pathtracer::rng::Rng;
 use pathtracer::sampler::Sampler;
@@ -32,7 +32,14 @@ fn furnace_mean(integrator: Integrator, material: Material, paths: u64) -> (Colo
         );
         let ray = Ray::new(Vec3::new(1.0, 2.0, -3.0), d.normalize(), 0.0);
         let mut sampler = Sampler::Independent(rng);
-        let l = integrator.radiance(&view, ray, &mut sampler);
+        let mut splats = Splats::default();
+        let l = integrator.radiance(
+            &view,
+            ray,
+            &CameraSample::default(),
+            &mut sampler,
+            &mut splats,
+        );
         sum += l;
         sum_sq += l.r * l.r;
     }

@@ -7,6 +7,7 @@
 
 mod common;
 
+use common::mean_and_error;
 use std::sync::Arc;
 
 use pathtracer::color::Color;
@@ -21,14 +22,6 @@ use pathtracer::world::World;
 const WIDTH: u32 = 8;
 const HEIGHT: u32 = 8;
 const RUNS: u64 = 32;
-
-/// Mean and standard error of a set of independent estimates.
-fn mean_and_error(values: &[f64]) -> (f64, f64) {
-    let n = values.len() as f64;
-    let mean = values.iter().sum::<f64>() / n;
-    let variance = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
-    (mean, (variance / n).sqrt())
-}
 
 /// Per run: the pixel values (channel averages), row-major.
 fn runs(scene: &Scene, integrator: Integrator, spp: u32) -> Vec<Vec<f64>> {
@@ -46,6 +39,7 @@ fn runs(scene: &Scene, integrator: Integrator, spp: u32) -> Vec<Vec<f64>> {
                 sampler: SamplerKind::Independent,
                 progress: false,
                 clamp: None,
+                light_paths: true,
             };
             let (image, stats) = render(scene, &world, &settings).expect("renders");
             assert_eq!(stats.dropped, 0, "NaN or infinite samples");

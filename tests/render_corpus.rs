@@ -49,6 +49,7 @@ fn every_shared_scene_renders_without_nan_or_inf_samples() {
                 sampler: SamplerKind::Sobol,
                 progress: false,
                 clamp: None,
+                light_paths: true,
             };
             let name = format!("{} ({})", file.display(), integrator.name());
             let (image, stats) = match render(&scene, &world, &settings) {

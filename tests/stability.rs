@@ -156,6 +156,7 @@ fn render_scene(scene: &Scene) -> (Image, u64) {
         sampler: SamplerKind::Sobol,
         progress: false,
         clamp: None,
+        light_paths: true,
     };
     let world = World::build(scene);
     let (image, stats) = render(scene, &world, &settings).expect("renders");

@@ -78,6 +78,11 @@ pub struct SamplingOptions {
     /// energy for the absence of fireflies. Off by default.
     #[arg(long)]
     pub clamp: Option<f64>,
+    /// Path integrator without light subpaths (the light tracing and
+    /// connections that find caustics through mirrors and glass): the same
+    /// expected image, noisier; for comparisons.
+    #[arg(long)]
+    pub no_light_paths: bool,
     #[command(flatten)]
     pub scene: SceneOptions,
 }
@@ -95,6 +100,7 @@ impl SamplingOptions {
             sampler: self.sampler,
             progress,
             clamp: self.clamp,
+            light_paths: !self.no_light_paths,
         }
     }
 }

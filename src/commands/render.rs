@@ -8,7 +8,8 @@ use clap::Args;
 use pathtracer::adaptive::{StoppingRule, render_adaptive};
 use pathtracer::film::Film;
 use pathtracer::image_io::{check_writable, write_atomically, write_image};
-use pathtracer::render::{SamplingPlan, render_into};
+use pathtracer::integrator::{Integrator, SceneView};
+use pathtracer::render::{RenderSettings, SamplingPlan, render_into};
 use pathtracer::scene::model::Scene;
 use pathtracer::world::World;
 
@@ -71,7 +72,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     };
     let image = film.to_image();
     if args.stats {
-        print_phases(&scene, &world, world_seconds, stats.seconds);
+        print_phases(&scene, &world, &settings, world_seconds, stats.seconds);
     }
     write_image(&output, &image, args.gamma)?;
     let pixels = (settings.width as u64 * settings.height as u64).max(1);
@@ -81,7 +82,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         sidecar.push(".json");
         let sidecar = std::path::PathBuf::from(sidecar);
         let json = format!(
-            "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}}}\n",
+            "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}, \"light_paths\": {}}}\n",
             args.scene.display().to_string(),
             settings.width,
             settings.height,
@@ -93,6 +94,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
             settings.sampler.name(),
             settings.max_depth,
             settings.clamp.map_or("null".to_string(), |c| c.to_string()),
+            settings.light_paths,
         );
         write_atomically(&sidecar, json.as_bytes())?;
     }
@@ -116,7 +118,13 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
 }
 
 /// `--stats`: the time of each phase, and the machinery a scene did not need.
-fn print_phases(scene: &Scene, world: &World, world_seconds: f64, render_seconds: f64) {
+fn print_phases(
+    scene: &Scene,
+    world: &World,
+    settings: &RenderSettings,
+    world_seconds: f64,
+    render_seconds: f64,
+) {
     let load = &scene.load;
     let plan = SamplingPlan::for_scene(scene);
     let skipped = |done: bool| {
@@ -160,6 +168,16 @@ fn print_phases(scene: &Scene, world: &World, world_seconds: f64, render_seconds
             "on"
         } else {
             "off (nothing moves)"
+        }
+    );
+    let view = SceneView::new(scene, world);
+    say!(
+        "light subpaths  {}",
+        match (settings.integrator, settings.light_paths, view.light_paths) {
+            (Integrator::Original, _, _) => "off (original estimator)",
+            (_, false, _) => "off (--no-light-paths)",
+            (_, true, false) => "off (no emitters, or no mirror or glass)",
+            (_, true, true) => "on (caustics by light tracing and connections)",
         }
     );
 }

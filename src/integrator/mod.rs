@@ -1,10 +1,12 @@
 //! Estimators of the radiance arriving along a camera ray.
 
+pub mod caustics;
 pub mod lights;
 pub mod lobes;
 pub mod original;
 pub mod path;
 
+use crate::camera::Camera;
 use crate::color::Color;
 use crate::lights::Emitters;
 use crate::math::Ray;
@@ -39,11 +41,58 @@ impl Integrator {
         Integrator::ALL.into_iter().find(|i| i.name() == name)
     }
 
-    pub fn radiance(&self, view: &SceneView, ray: Ray, sampler: &mut Sampler) -> Color {
+    /// The radiance along the camera ray `ray` of `sample`; light that the
+    /// sample's light subpath (if any) sends to other pixels goes to `splats`.
+    pub fn radiance(
+        &self,
+        view: &SceneView,
+        ray: Ray,
+        sample: &CameraSample,
+        sampler: &mut Sampler,
+        splats: &mut Splats,
+    ) -> Color {
         match self {
             Integrator::Original => original::radiance(view, ray, sampler),
-            Integrator::Path => path::radiance(view, ray, sampler),
+            Integrator::Path => path::radiance(view, ray, sample, sampler, splats),
         }
+    }
+}
+
+/// Where a camera ray comes from: its pixel and lens sample (what light
+/// tracing's MIS weights need to know of the camera's side).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CameraSample {
+    pub pixel_x: usize,
+    /// Row from the bottom of the image.
+    pub pixel_y: usize,
+    /// The unit-square lens sample of the ray (`[0.5, 0.5]` for a pinhole).
+    pub lens: [f64; 2],
+}
+
+/// What one camera sample's light subpath adds to the film (light tracing):
+/// radiance for at most the 2x2 pixels around the film position it reaches,
+/// as contributions to the film's light-tracing sums, and whether a light
+/// subpath was traced at all (light tracing's estimate is the sum over
+/// light subpaths divided by their number).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Splats {
+    entries: [(usize, usize, Color); 4],
+    len: usize,
+    pub light_paths: u32,
+}
+
+impl Splats {
+    /// Adds radiance to pixel (`x`, `y`), `y` from the bottom; beyond four
+    /// entries (which one film position never needs) it is dropped.
+    pub fn push(&mut self, x: usize, y: usize, value: Color) {
+        if self.len < self.entries.len() {
+            self.entries[self.len] = (x, y, value);
+            self.len += 1;
+        }
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = &(usize, usize, Color)> {
+        self.entries[..self.len].iter()
     }
 }
 
@@ -60,16 +109,25 @@ pub struct SceneView<'a> {
     pub emitters: Emitters,
     /// Scattering vertices before a path ends (the original: 5).
     pub max_depth: u32,
+    /// Whether the path integrator traces light subpaths for caustics (the
+    /// scene has emitters, and mirror or glass).
+    pub light_paths: bool,
+    /// The camera of the film being rendered, which light subpaths connect
+    /// to (`None`: no light tracing, as for paths traced outside a render).
+    pub camera: Option<Camera>,
 }
 
 impl<'a> SceneView<'a> {
     pub fn new(scene: &'a Scene, world: &'a World) -> SceneView<'a> {
+        let emitters = Emitters::build(scene, world);
         SceneView {
             scene,
             world,
             direct_lights: lights::direct_lights(scene),
-            emitters: Emitters::build(scene, world),
+            light_paths: caustics::enabled(scene, world, &emitters),
+            emitters,
             max_depth: original::MAX_DEPTH,
+            camera: None,
         }
     }
 }

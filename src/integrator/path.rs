@@ -26,8 +26,9 @@ use crate::sampler::Sampler;
 use crate::sampling::{cosine_hemisphere, reflect};
 use crate::shading::Shading;
 
-use super::SceneView;
+use super::caustics::{self, CausticVertex};
 use super::lobes::{GlassChoice, Lobe, Lobes, glass_direction, pa1_lights};
+use super::{CameraSample, SceneView, Splats};
 
 /// Scattering vertices after which Russian roulette may end a path. Within
 /// the original's five vertices every continuation pays for itself (ending
@@ -48,12 +49,40 @@ struct DiffuseOrigin {
     pdf: f64,
 }
 
-pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color {
+/// The path tracer's side of a caustic connection: the last diffuse vertex
+/// `y` that a bounce from a diffuse vertex `x` found, and the specular
+/// vertices since.
+#[derive(Clone, Copy)]
+struct CausticTrack {
+    /// `(cos_x / pi) (cos_y / d^2)` of the edge `x -> y`.
+    edge: f64,
+    /// Shading-normal correction of `y` for the direction it was left in.
+    shading_ratio: f64,
+    /// Mirror and glass vertices after `y`.
+    chain: u32,
+}
+
+pub fn radiance(
+    view: &SceneView,
+    mut ray: Ray,
+    sample: &CameraSample,
+    sampler: &mut Sampler,
+    splats: &mut Splats,
+) -> Color {
     let mut result = Color::BLACK;
     let mut throughput = Color::WHITE;
     let mut depth = 0;
     // `None`: the ray came from the camera or a delta lobe (weight 1).
     let mut origin: Option<DiffuseOrigin> = None;
+    let mut track: Option<CausticTrack> = None;
+    // The light subpath of the caustic connections; every camera sample
+    // traces one (light tracing divides by their number).
+    let light_path: Option<CausticVertex> = if view.light_paths {
+        let max_chain = view.max_depth.saturating_sub(1);
+        caustics::trace(view, ray.time, sampler, max_chain, splats)
+    } else {
+        None
+    };
     loop {
         let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
             if depth == 0 {
@@ -64,9 +93,13 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
         let at = Shading::new(view.scene, &hit, &ray);
         let material = at.material;
         if !material.emission.is_black() {
-            let weight = match origin {
-                None => 1.0,
-                Some(from) => {
+            let weight = match (origin, track) {
+                (None, Some(track)) if track.chain > 0 => {
+                    let density = caustics::emission_density(view, ray.time, &hit, &-ray.direction);
+                    caustics::path_weight(track.edge, track.shading_ratio, density)
+                }
+                (None, _) => 1.0,
+                (Some(from), _) => {
                     let light_pdf = view.emitters.pdf(&from.point, ray.time, &hit);
                     power_heuristic(from.pdf, light_pdf)
                 }
@@ -90,19 +123,33 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
             Some(lobe) => lobe,
             None => lobes.pick(sampler.next_f64()),
         };
-        origin = None;
+        // Where the ray that found this vertex came from (for the caustic track).
+        let arrived_from = origin.take();
         let direction = match lobe {
             Lobe::Diffuse => {
                 result += throughput * light_sample(view, &at, ray.time, sampler);
+                if let Some(y) = light_path.filter(|y| depth + 1 + y.chain <= view.max_depth) {
+                    result += throughput * caustics::connect(view, &at, &y);
+                }
                 let direction = cosine_hemisphere(&at.normal, sampler.next_2d());
+                track = match arrived_from {
+                    _ if !view.light_paths => None,
+                    Some(from) => caustic_track(&from, &at, &ray, &direction),
+                    None if depth == 1 => camera_track(view, sample, &at, &direction),
+                    None => None,
+                };
                 origin = Some(DiffuseOrigin {
                     point: at.point,
                     pdf: at.normal.dot(&direction).max(0.0) / PI,
                 });
                 direction
             }
-            Lobe::Mirror => reflect(&ray.direction, &at.normal),
+            Lobe::Mirror => {
+                count_chain_vertex(&mut track);
+                reflect(&ray.direction, &at.normal)
+            }
             Lobe::Glass => {
+                count_chain_vertex(&mut track);
                 glass_direction(&ray, &at, sampler, &mut throughput, GlassChoice::Fresnel)
             }
         };
@@ -121,6 +168,59 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
     }
     debug_assert!(result.is_finite() || !throughput.is_finite());
     result
+}
+
+/// The caustic track of a diffuse vertex `at` (as `y`) reached by `ray` from
+/// the diffuse vertex `from` (as `x`) and left in `direction`; `None` where
+/// a caustic connection could not make the path.
+fn caustic_track(
+    from: &DiffuseOrigin,
+    at: &Shading,
+    ray: &Ray,
+    direction: &crate::math::Vec3,
+) -> Option<CausticTrack> {
+    let distance_squared = (from.point - at.point).norm_squared();
+    let edge = caustics::edge_density(
+        from.pdf,
+        at.geometric.dot(&-ray.direction),
+        distance_squared,
+    )?;
+    Some(CausticTrack {
+        edge,
+        shading_ratio: shading_ratio(at, direction)?,
+        chain: 0,
+    })
+}
+
+/// The caustic track of the camera ray's first vertex `at` (as `y`), left
+/// in `direction`; `None` where light tracing could not make the path.
+fn camera_track(
+    view: &SceneView,
+    sample: &CameraSample,
+    at: &Shading,
+    direction: &crate::math::Vec3,
+) -> Option<CausticTrack> {
+    let edge = caustics::camera_edge(view, sample, &at.point, &at.geometric)?;
+    let shading_ratio = shading_ratio(at, direction)?;
+    Some(CausticTrack {
+        edge,
+        shading_ratio,
+        chain: 0,
+    })
+}
+
+/// `cos_shading / cos_geometric` of a direction leaving `at` on the side of
+/// its oriented normals; `None` on the other side.
+fn shading_ratio(at: &Shading, direction: &crate::math::Vec3) -> Option<f64> {
+    let geometric = at.geometric.dot(direction);
+    let ratio = at.normal.dot(direction) / geometric;
+    (geometric > 0.0 && ratio > 0.0 && ratio.is_finite()).then_some(ratio)
+}
+
+fn count_chain_vertex(track: &mut Option<CausticTrack>) {
+    if let Some(track) = track {
+        track.chain += 1;
+    }
 }
 
 /// One light sample at a diffuse vertex, MIS-weighted against cosine

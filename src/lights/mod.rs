@@ -15,6 +15,7 @@
 
 pub mod cut;
 pub mod distribution;
+pub mod emission;
 pub mod emitter;
 
 #[cfg(test)]
@@ -28,6 +29,7 @@ use crate::world::{Primitive, World, WorldHit};
 
 pub use cut::{CutPlane, Cuts};
 pub use distribution::Distribution;
+pub use emission::EmissionPoint;
 pub use emitter::{EmitterShape, ShapeSample};
 
 /// No entry for this primitive.
@@ -133,20 +135,24 @@ impl Emitters {
     /// [`Emitters::sample`] from `reference` gives the point of `hit`; 0 for
     /// everything light sampling never produces.
     pub fn pdf(&self, reference: &Point3, time: f64, hit: &WorldHit) -> f64 {
-        let Some(distribution) = &self.distribution else {
+        let Some((index, probability)) = self.entry_of(hit) else {
             return 0.0;
         };
+        let shape = &self.entries[index].shape;
+        probability * shape.pdf(reference, time, &hit.point, &hit.geometric_normal)
+    }
+
+    /// The entry of the emitter that `hit` is on and its pick probability;
+    /// `None` when light sampling never picks it.
+    fn entry_of(&self, hit: &WorldHit) -> Option<(usize, f64)> {
+        let distribution = self.distribution.as_ref()?;
         let first = self.first_entry.get(hit.primitive).copied().unwrap_or(NONE);
         if first == NONE {
-            return 0.0;
+            return None;
         }
         let index = first as usize + hit.element as usize;
         let probability = distribution.pmf(index);
-        if probability <= 0.0 {
-            return 0.0;
-        }
-        let shape = &self.entries[index].shape;
-        probability * shape.pdf(reference, time, &hit.point, &hit.geometric_normal)
+        (probability > 0.0).then_some((index, probability))
     }
 }
 

@@ -73,6 +73,16 @@ impl Sampler {
         }
     }
 
+    /// An independent sampler for a second path of the same pixel sample
+    /// (told apart by `salt`): its own Sobol' sequence over the pixel's
+    /// samples, or its own random stream. Deterministic, like this one.
+    pub fn fork(&self, salt: u64) -> Sampler {
+        match self {
+            Sampler::Independent(rng) => Sampler::Independent(rng.fork(salt)),
+            Sampler::Sobol(stream) => Sampler::Sobol(stream.fork(salt)),
+        }
+    }
+
     /// The values of the next two dimensions. The Sobol' sampler first skips
     /// to an even dimension, so that the pair is one of the stratified pairs
     /// (0, 1), (2, 3), (4, 5), ...
@@ -194,6 +204,18 @@ impl SobolStream {
         SobolStream {
             pixel_seed: pixel_seed(pixel_index, seed),
             sample_index,
+            dimension: 0,
+            values: [0; sobol::DIMENSIONS],
+            padding_seed: 0,
+        }
+    }
+
+    /// The stream of the same sample index in another sequence (see
+    /// [`Sampler::fork`]).
+    pub fn fork(&self, salt: u64) -> SobolStream {
+        SobolStream {
+            pixel_seed: mix64(self.pixel_seed ^ mix64(salt)),
+            sample_index: self.sample_index,
             dimension: 0,
             values: [0; sobol::DIMENSIONS],
             padding_seed: 0,

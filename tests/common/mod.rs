@@ -74,6 +74,14 @@ pub fn corpus(shared: &Path) -> Vec<(PathBuf, PathBuf)> {
 }
 
 /// A scene with the camera at the origin looking down -z, built in code.
+/// Mean and standard error of a set of independent estimates.
+pub fn mean_and_error(values: &[f64]) -> (f64, f64) {
+    let n = values.len() as f64;
+    let mean = values.iter().sum::<f64>() / n;
+    let variance = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    (mean, (variance / n).sqrt())
+}
+
 pub fn scene_with(materials: Vec<Material>, root: Object) -> Scene {
     Scene::new(materials, root)
 }

@@ -1,0 +1,146 @@
+//! The light subpath of a camera sample: from an emitter through mirrors and
+//! glass to the first vertex where the diffuse lobe is chosen.
+
+use std::f64::consts::PI;
+
+use super::connect::splat_to_camera;
+use crate::color::Color;
+use crate::integrator::lobes::{GlassChoice, Lobe, Lobes, glass_direction};
+use crate::integrator::{SceneView, Splats};
+use crate::math::{Point3, Ray, Vec3, offset_origin};
+use crate::sampler::Sampler;
+use crate::sampling::{cosine_hemisphere, reflect};
+use crate::shading::Shading;
+
+/// Salt of the light subpath's sampler (see [`Sampler::fork`]).
+const LIGHT_PATH_SALT: u64 = 0x11A7_C0DE_CA05_71C5;
+
+/// The end `y` of a light subpath: a vertex where the diffuse lobe was
+/// chosen after at least one specular vertex.
+#[derive(Clone, Copy, Debug)]
+pub struct CausticVertex {
+    pub point: Point3,
+    /// Unit geometric and shading normals on the side the light arrived from.
+    pub geometric: Vec3,
+    pub normal: Vec3,
+    /// The diffuse lobe over its pick probability, times pi:
+    /// `color * lobes.total()` (the BRDF is this over pi).
+    pub lobe_weight: Color,
+    /// The subpath's weight arriving at `y` (emission over densities,
+    /// specular weights, shading-normal correction).
+    pub beta: Color,
+    /// Shading-normal correction `s_y = cos_shading / cos_geometric` of the
+    /// arrival direction.
+    pub shading_ratio: f64,
+    /// Emission density of the light point and direction.
+    pub emission_density: f64,
+    /// Specular vertices between the light and `y` (at least 1).
+    pub chain: u32,
+    /// Shutter time of the sample.
+    pub time: f64,
+}
+
+/// Traces the light subpath of the camera sample that `sampler` belongs to
+/// (on its own forked sequence) with at most `max_chain` specular vertices,
+/// and splats its connection to the camera into `splats`. Returns its
+/// caustic vertex for the camera path's connections.
+pub fn trace(
+    view: &SceneView,
+    time: f64,
+    sampler: &Sampler,
+    max_chain: u32,
+    splats: &mut Splats,
+) -> Option<CausticVertex> {
+    splats.light_paths = 1;
+    if max_chain == 0 {
+        return None;
+    }
+    let mut sampler = sampler.fork(LIGHT_PATH_SALT);
+    let select = if view.emitters.len() > 1 {
+        sampler.next_f64()
+    } else {
+        0.5
+    };
+    let u_point = sampler.next_2d();
+    let u_side = sampler.next_f64();
+    let u_direction = sampler.next_2d();
+    let start = view.emitters.sample_emission_point(
+        &view.scene.camera.center,
+        time,
+        select,
+        u_point,
+        u_side,
+    )?;
+    let direction = cosine_hemisphere(&start.normal, u_direction);
+    let emission_density = start.density;
+    // L_e |cos| / (p_area p_direction), with p_direction = cos / pi.
+    let mut beta = start.emission * (PI / emission_density);
+    let mut ray = Ray::new(
+        offset_origin(&start.point, &start.normal, &direction),
+        direction,
+        time,
+    );
+    let mut chain = 0;
+    loop {
+        let hit = view.world.intersect(&ray, 0.0, f64::INFINITY)?;
+        let at = Shading::new(view.scene, &hit, &ray);
+        if at.color.is_black() {
+            return None;
+        }
+        let lobes = Lobes::of(at.material);
+        if lobes.total() <= 0.0 {
+            return None;
+        }
+        let lobe = match lobes.only() {
+            Some(lobe) => lobe,
+            None => lobes.pick(sampler.next_f64()),
+        };
+        let direction = match lobe {
+            Lobe::Diffuse => {
+                if chain == 0 {
+                    // Direct light: next-event estimation's business.
+                    return None;
+                }
+                let towards_light = -ray.direction;
+                let shading_ratio =
+                    at.normal.dot(&towards_light) / at.geometric.dot(&towards_light);
+                if !(shading_ratio > 0.0 && shading_ratio.is_finite()) {
+                    return None;
+                }
+                let y = CausticVertex {
+                    point: at.point,
+                    geometric: at.geometric,
+                    normal: at.normal,
+                    lobe_weight: at.color * lobes.total(),
+                    beta: beta * shading_ratio,
+                    shading_ratio,
+                    emission_density,
+                    chain,
+                    time,
+                };
+                if let Some(camera) = &view.camera {
+                    let lens = if camera.has_lens() {
+                        sampler.next_2d()
+                    } else {
+                        [0.5, 0.5]
+                    };
+                    splat_to_camera(view, camera, &y, lens, splats);
+                }
+                return Some(y);
+            }
+            Lobe::Mirror => {
+                beta *= at.color * lobes.total();
+                reflect(&ray.direction, &at.normal)
+            }
+            Lobe::Glass => {
+                beta *= at.color * lobes.total();
+                glass_direction(&ray, &at, &mut sampler, &mut beta, GlassChoice::Fresnel)
+            }
+        };
+        chain += 1;
+        if chain > max_chain {
+            return None;
+        }
+        ray = Ray::new(at.spawn_origin(&direction), direction, time);
+    }
+}
