@@ -119,12 +119,12 @@ pub struct SceneView<'a> {
 
 impl<'a> SceneView<'a> {
     pub fn new(scene: &'a Scene, world: &'a World) -> SceneView<'a> {
-        let emitters = Emitters::build(scene, world);
+        let mut emitters = Emitters::build(scene, world);
         SceneView {
             scene,
             world,
             direct_lights: lights::direct_lights(scene),
-            light_paths: caustics::enabled(scene, world, &emitters),
+            light_paths: caustics::prepare(scene, world, &mut emitters),
             emitters,
             max_depth: original::MAX_DEPTH,
             camera: None,

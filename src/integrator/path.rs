@@ -21,7 +21,7 @@
 use std::f64::consts::PI;
 
 use crate::color::Color;
-use crate::math::{Point3, Ray};
+use crate::math::{Point3, Ray, Vec3};
 use crate::sampler::Sampler;
 use crate::sampling::{cosine_hemisphere, reflect};
 use crate::shading::Shading;
@@ -54,12 +54,31 @@ struct DiffuseOrigin {
 /// vertices since.
 #[derive(Clone, Copy)]
 struct CausticTrack {
-    /// `(cos_x / pi) (cos_y / d^2)` of the edge `x -> y`.
-    edge: f64,
+    /// The path tracer's density of the step that found `y`.
+    edge: Edge,
     /// Shading-normal correction of `y` for the direction it was left in.
     shading_ratio: f64,
     /// Mirror and glass vertices after `y`.
     chain: u32,
+}
+
+/// The `edge` of a caustic track (see `caustics`).
+#[derive(Clone, Copy)]
+enum Edge {
+    /// `(cos_x / pi) (cos_y / d^2)` of a bounce from a diffuse `x`.
+    Bounce(f64),
+    /// The camera ray found `y` (at `point`, geometric `normal` facing the
+    /// camera): computed when needed, which is rarely.
+    Camera { point: Point3, normal: Vec3 },
+}
+
+impl Edge {
+    fn density(&self, view: &SceneView, sample: &CameraSample) -> Option<f64> {
+        match *self {
+            Edge::Bounce(density) => Some(density),
+            Edge::Camera { point, normal } => caustics::camera_edge(view, sample, &point, &normal),
+        }
+    }
 }
 
 pub fn radiance(
@@ -94,10 +113,14 @@ pub fn radiance(
         let material = at.material;
         if !material.emission.is_black() {
             let weight = match (origin, track) {
-                (None, Some(track)) if track.chain > 0 => {
-                    let density = caustics::emission_density(view, ray.time, &hit, &-ray.direction);
-                    caustics::path_weight(track.edge, track.shading_ratio, density)
-                }
+                (None, Some(track)) if track.chain > 0 => match track.edge.density(view, sample) {
+                    Some(edge) => {
+                        let density =
+                            caustics::emission_density(view, ray.time, &hit, &-ray.direction);
+                        caustics::path_weight(edge, track.shading_ratio, density)
+                    }
+                    None => 1.0,
+                },
                 (None, _) => 1.0,
                 (Some(from), _) => {
                     let light_pdf = view.emitters.pdf(&from.point, ray.time, &hit);
@@ -135,7 +158,7 @@ pub fn radiance(
                 track = match arrived_from {
                     _ if !view.light_paths => None,
                     Some(from) => caustic_track(&from, &at, &ray, &direction),
-                    None if depth == 1 => camera_track(view, sample, &at, &direction),
+                    None if depth == 1 => camera_track(&at, &direction),
                     None => None,
                 };
                 origin = Some(DiffuseOrigin {
@@ -177,7 +200,7 @@ fn caustic_track(
     from: &DiffuseOrigin,
     at: &Shading,
     ray: &Ray,
-    direction: &crate::math::Vec3,
+    direction: &Vec3,
 ) -> Option<CausticTrack> {
     let distance_squared = (from.point - at.point).norm_squared();
     let edge = caustics::edge_density(
@@ -186,7 +209,7 @@ fn caustic_track(
         distance_squared,
     )?;
     Some(CausticTrack {
-        edge,
+        edge: Edge::Bounce(edge),
         shading_ratio: shading_ratio(at, direction)?,
         chain: 0,
     })
@@ -194,24 +217,20 @@ fn caustic_track(
 
 /// The caustic track of the camera ray's first vertex `at` (as `y`), left
 /// in `direction`; `None` where light tracing could not make the path.
-fn camera_track(
-    view: &SceneView,
-    sample: &CameraSample,
-    at: &Shading,
-    direction: &crate::math::Vec3,
-) -> Option<CausticTrack> {
-    let edge = caustics::camera_edge(view, sample, &at.point, &at.geometric)?;
-    let shading_ratio = shading_ratio(at, direction)?;
+fn camera_track(at: &Shading, direction: &Vec3) -> Option<CausticTrack> {
     Some(CausticTrack {
-        edge,
-        shading_ratio,
+        edge: Edge::Camera {
+            point: at.point,
+            normal: at.geometric,
+        },
+        shading_ratio: shading_ratio(at, direction)?,
         chain: 0,
     })
 }
 
 /// `cos_shading / cos_geometric` of a direction leaving `at` on the side of
 /// its oriented normals; `None` on the other side.
-fn shading_ratio(at: &Shading, direction: &crate::math::Vec3) -> Option<f64> {
+fn shading_ratio(at: &Shading, direction: &Vec3) -> Option<f64> {
     let geometric = at.geometric.dot(direction);
     let ratio = at.normal.dot(direction) / geometric;
     (geometric > 0.0 && ratio > 0.0 && ratio.is_finite()).then_some(ratio)

@@ -12,8 +12,8 @@
 
 use std::f64::consts::PI;
 
-use super::Emitters;
 use super::emitter::{EmitterShape, uniform_sphere};
+use super::{Distribution, Emitters, LightPathStarts};
 use crate::color::Color;
 use crate::math::{Point3, Vec3};
 use crate::world::WorldHit;
@@ -30,10 +30,81 @@ pub struct EmissionPoint {
     pub density: f64,
 }
 
+/// Emitters that subtend more than this solid angle (steradians) from the
+/// caustic casters start no light subpaths: through a mirror the path tracer
+/// finds them often enough (a cosine-sampled bounce hits a light of solid
+/// angle `w` with probability about `w / pi`), and light subpaths from them
+/// would cost more than they save (a sky-sized light over mirror dragons).
+pub const MAX_LIGHT_PATH_SOLID_ANGLE: f64 = 1.0;
+
 impl Emitters {
-    /// Picks an emitter with `select`, a point on it with `u_point` and, for
-    /// two-sided emitters, a side with `u_side`; `viewpoint` (the camera)
-    /// chooses the cap of a cut sphere.
+    /// Lets light subpaths start only on the emitters (whole primitives:
+    /// all triangles of a mesh together) that subtend at most
+    /// [`MAX_LIGHT_PATH_SOLID_ANGLE`] from `reference`; whether any is left.
+    pub fn restrict_light_paths(&mut self, reference: &Point3) -> bool {
+        let mut firsts: Vec<usize> = self
+            .first_entry
+            .iter()
+            .filter(|&&first| first != super::NONE)
+            .map(|&first| first as usize)
+            .collect();
+        firsts.sort_unstable();
+        let Some(all) = &self.distribution else {
+            return false;
+        };
+        let mut weights: Vec<f64> = (0..self.entries.len()).map(|i| all.pmf(i)).collect();
+        let mut excluded = false;
+        for (k, &first) in firsts.iter().enumerate() {
+            let end = firsts.get(k + 1).copied().unwrap_or(self.entries.len());
+            let solid_angle: f64 = self.entries[first..end]
+                .iter()
+                .map(|e| solid_angle(&e.shape, reference))
+                .sum();
+            if solid_angle > MAX_LIGHT_PATH_SOLID_ANGLE {
+                weights[first..end].iter_mut().for_each(|w| *w = 0.0);
+                excluded = true;
+            }
+        }
+        if !excluded {
+            self.light_path_starts = None;
+            return true;
+        }
+        let share: f64 = weights.iter().sum();
+        let distribution = Distribution::new(&weights);
+        let any = distribution.is_some();
+        self.light_path_starts = Some(LightPathStarts {
+            distribution,
+            share,
+        });
+        any
+    }
+
+    /// The probability that a light subpath starts at all: the share of the
+    /// power of the emitters where light subpaths start. A light subpath is
+    /// drawn as if from every emitter by power, and dropped when it would
+    /// start on another; the caller draws that event, so that a dropped
+    /// subpath costs one random number.
+    pub fn light_path_share(&self) -> f64 {
+        match &self.light_path_starts {
+            Some(starts) => starts.share,
+            None => 1.0,
+        }
+    }
+
+    /// The distribution light subpaths pick emitters by (given that one
+    /// starts), and the factor from its probabilities to those of picking an
+    /// emitter by power among all.
+    fn light_path_distribution(&self) -> Option<(&Distribution, f64)> {
+        match &self.light_path_starts {
+            Some(starts) => Some((starts.distribution.as_ref()?, starts.share)),
+            None => Some((self.distribution.as_ref()?, 1.0)),
+        }
+    }
+
+    /// Picks an emitter with `select` (among those where light subpaths
+    /// start; the density includes [`Emitters::light_path_share`]), a point
+    /// on it with `u_point` and, for two-sided emitters, a side with
+    /// `u_side`; `viewpoint` (the camera) chooses the cap of a cut sphere.
     pub fn sample_emission_point(
         &self,
         viewpoint: &Point3,
@@ -42,7 +113,9 @@ impl Emitters {
         u_point: [f64; 2],
         u_side: f64,
     ) -> Option<EmissionPoint> {
-        let (index, probability) = self.distribution.as_ref()?.sample(select);
+        let (distribution, share) = self.light_path_distribution()?;
+        let (index, probability) = distribution.sample(select);
+        let probability = probability * share;
         let emitter = &self.entries[index];
         let (point, normal, area_density, sides) =
             emission_point(&emitter.shape, viewpoint, time, u_point, u_side)?;
@@ -66,9 +139,16 @@ impl Emitters {
         hit: &WorldHit,
         direction: &Vec3,
     ) -> f64 {
-        let Some((index, probability)) = self.entry_of(hit) else {
+        let Some((index, _)) = self.entry_of(hit) else {
             return 0.0;
         };
+        let Some((distribution, share)) = self.light_path_distribution() else {
+            return 0.0;
+        };
+        let probability = distribution.pmf(index) * share;
+        if probability <= 0.0 {
+            return 0.0;
+        }
         let shape = &self.entries[index].shape;
         match *shape {
             EmitterShape::Sphere {
@@ -97,6 +177,64 @@ impl Emitters {
                 }
             }
         }
+    }
+}
+
+/// The solid angle `shape` subtends from `reference`, near enough to tell a
+/// small light from a sky-sized one: a sphere by its cone (a cut sphere by
+/// its cap, taken flat), a planar emitter by area times cosine over the
+/// squared distance of its centre.
+fn solid_angle(shape: &EmitterShape, reference: &Point3) -> f64 {
+    let flat = |area: f64, centre: Point3, normal: Vec3| {
+        let offset = reference - centre;
+        let distance = offset.norm();
+        if distance <= 0.0 {
+            return 2.0 * PI;
+        }
+        let cosine = normal.dot(&offset).abs() / (normal.norm() * distance);
+        let solid_angle = area * cosine / (distance * distance);
+        if solid_angle.is_finite() {
+            solid_angle.min(2.0 * PI)
+        } else {
+            0.0
+        }
+    };
+    match *shape {
+        EmitterShape::Sphere {
+            center,
+            motion,
+            radius,
+            cuts,
+        } => {
+            let center = center + motion * 0.5;
+            if let Some(cap) = cuts.cap(&center, radius, reference) {
+                let rim_radius2 = radius * radius * (1.0 - cap.min_cos * cap.min_cos);
+                let rim_centre = center + cap.axis * (radius * cap.min_cos);
+                return flat(PI * rim_radius2, rim_centre, cap.axis);
+            }
+            let distance2 = (center - reference).norm_squared();
+            if distance2 <= radius * radius {
+                return 4.0 * PI;
+            }
+            2.0 * PI * (1.0 - (1.0 - radius * radius / distance2).sqrt())
+        }
+        EmitterShape::Triangle {
+            vertices: [a, b, c],
+        } => flat(shape.area(), (a + b + c) / 3.0, (b - a).cross(&(c - a))),
+        EmitterShape::Parallelogram {
+            origin,
+            edge_u,
+            edge_v,
+        } => flat(
+            shape.area(),
+            origin + (edge_u + edge_v) * 0.5,
+            edge_u.cross(&edge_v),
+        ),
+        EmitterShape::Ellipse {
+            center,
+            axis_u,
+            axis_v,
+        } => flat(shape.area(), center, axis_u.cross(&axis_v)),
     }
 }
 

@@ -64,6 +64,18 @@ pub struct Emitters {
     /// Per world primitive: its first entry, or `NONE`. A mesh's triangle `k`
     /// is entry `first + k`.
     first_entry: Vec<u32>,
+    /// Light subpaths start only on some emitters (see
+    /// [`Emitters::restrict_light_paths`]): the distribution over those, by
+    /// power, and their share of the power. `None`: on every emitter.
+    light_path_starts: Option<LightPathStarts>,
+}
+
+#[derive(Clone, Debug)]
+struct LightPathStarts {
+    /// Over all entries, zero for those where no light subpath starts.
+    distribution: Option<Distribution>,
+    /// The share of the total power of the entries where they start.
+    share: f64,
 }
 
 impl Emitters {
@@ -98,6 +110,7 @@ impl Emitters {
             entries,
             distribution,
             first_entry,
+            light_path_starts: None,
         }
     }
 

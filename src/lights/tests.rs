@@ -297,3 +297,53 @@ fn sphere_cut_by_a_plane_is_sampled_on_the_reachable_cap() {
         );
     }
 }
+
+#[test]
+fn light_paths_start_on_small_emitters_only_with_matching_densities() {
+    use crate::scene::model::Material;
+    let light = |radiance: f64| Material {
+        color: Color::BLACK,
+        emission: Color::gray(radiance),
+        ..Material::default()
+    };
+    let sphere = |center: Point3, radius: f64, material: usize| Object::Sphere {
+        center,
+        radius,
+        motion: Vec3::zeros(),
+        material,
+    };
+    // A sky-sized sphere and a small one, seen from the origin.
+    let root = Object::Group(vec![
+        sphere(Point3::new(0.0, 120.0, 0.0), 100.0, 0),
+        sphere(Point3::new(10.0, 0.0, 0.0), 0.5, 1),
+    ]);
+    let scene = scene(vec![light(1.0), light(50.0)], root);
+    let world = World::build(&scene);
+    let mut emitters = Emitters::build(&scene, &world);
+    assert!(emitters.restrict_light_paths(&Point3::zeros()));
+    let power = |radiance: f64, radius: f64| radiance * 4.0 * PI * radius * radius;
+    let share = power(50.0, 0.5) / (power(50.0, 0.5) + power(1.0, 100.0));
+    assert!((emitters.light_path_share() - share).abs() < 1e-12);
+    let mut rng = Rng::new(9, 10);
+    for _ in 0..200 {
+        let u = [rng.next_f64(), rng.next_f64()];
+        let start = emitters
+            .sample_emission_point(&Point3::zeros(), 0.0, rng.next_f64(), u, 0.5)
+            .expect("the small light starts light subpaths");
+        // Always on the small sphere, with density share / area.
+        assert!(((start.point - Point3::new(10.0, 0.0, 0.0)).norm() - 0.5).abs() < 1e-9);
+        let expected = share / (4.0 * PI * 0.25);
+        assert!((start.density / expected - 1.0).abs() < 1e-9);
+        // The hit of the same point has the same density; the big light's none.
+        let ray = Ray::new(start.point + start.normal, -start.normal, 0.0);
+        let hit = world.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+        let density = emitters.emission_point_density(&Point3::zeros(), 0.0, &hit, &start.normal);
+        assert!((density / start.density - 1.0).abs() < 1e-9);
+    }
+    let down = Ray::new(Point3::zeros(), Vec3::y(), 0.0);
+    let sky = world.intersect(&down, 0.0, f64::INFINITY).unwrap();
+    assert_eq!(
+        emitters.emission_point_density(&Point3::zeros(), 0.0, &sky, &-Vec3::y()),
+        0.0
+    );
+}

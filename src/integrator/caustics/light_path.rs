@@ -56,6 +56,10 @@ pub fn trace(
         return None;
     }
     let mut sampler = sampler.fork(LIGHT_PATH_SALT);
+    let share = view.emitters.light_path_share();
+    if share < 1.0 && sampler.next_f64() >= share {
+        return None;
+    }
     let select = if view.emitters.len() > 1 {
         sampler.next_f64()
     } else {

@@ -42,7 +42,7 @@ mod connect;
 mod light_path;
 
 use crate::lights::Emitters;
-use crate::math::Vec3;
+use crate::math::{Aabb, Vec3};
 use crate::scene::model::Scene;
 use crate::world::{World, WorldHit};
 
@@ -51,16 +51,37 @@ use super::SceneView;
 pub use connect::{camera_edge, connect, edge_density};
 pub use light_path::{CausticVertex, trace};
 
-/// Whether light subpaths can add anything to a scene: it needs emitters to
-/// start from and mirror or glass to go through.
-pub fn enabled(scene: &Scene, world: &World, emitters: &Emitters) -> bool {
-    let used = |material: usize| scene.materials.get(material);
-    let specular = world
+/// Whether light subpaths can add anything to a scene: it needs mirror or
+/// glass to go through and emitters small enough, as seen from the mirrors
+/// and glass, for the path tracer to miss them (see
+/// [`Emitters::restrict_light_paths`], which this calls with the centre of
+/// the bounded mirror and glass objects, or the camera).
+pub fn prepare(scene: &Scene, world: &World, emitters: &mut Emitters) -> bool {
+    let is_specular = |material: usize| {
+        scene
+            .materials
+            .get(material)
+            .is_some_and(|m| m.specular > 0.0 || m.refract > 0.0)
+    };
+    let casters: Vec<_> = world
         .primitives()
         .iter()
-        .filter_map(|primitive| used(primitive.material))
-        .any(|m| m.specular > 0.0 || m.refract > 0.0);
-    specular && !emitters.is_empty()
+        .filter(|primitive| is_specular(primitive.material))
+        .collect();
+    if casters.is_empty() || emitters.is_empty() {
+        return false;
+    }
+    let bounds = casters
+        .iter()
+        .filter_map(|primitive| primitive.bounds())
+        .filter(Aabb::is_valid)
+        .fold(Aabb::empty(), |acc, b| acc.union(&b));
+    let reference = if bounds.is_empty() {
+        scene.camera.center
+    } else {
+        bounds.centroid()
+    };
+    emitters.restrict_light_paths(&reference)
 }
 
 /// The emission density (see the module documentation) of the light point
