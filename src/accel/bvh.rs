@@ -76,6 +76,16 @@ impl Bvh {
         bvh
     }
 
+    /// The same tree with leaf entries numbered in leaf order (entry `k` is
+    /// reported as `k`), and the original index of each: a caller that
+    /// stores its primitives in this order reads each leaf's primitives from
+    /// consecutive memory.
+    pub fn into_leaf_order(mut self) -> (Bvh, Vec<u32>) {
+        let order = std::mem::take(&mut self.indices);
+        self.indices = (0..order.len() as u32).collect();
+        (self, order)
+    }
+
     /// Number of primitives in the tree.
     pub fn len(&self) -> usize {
         self.indices.len()
@@ -424,6 +434,25 @@ mod tests {
                 });
                 assert_eq!(any, brute.is_some());
             }
+        }
+    }
+
+    #[test]
+    fn leaf_order_reports_positions_of_the_original_order() {
+        let mut rng = Rng::new(8, 9);
+        let boxes = random_boxes(&mut rng, 200);
+        let bvh = Bvh::build(&boxes);
+        let (ordered, order) = bvh.clone().into_leaf_order();
+        let permuted: Vec<Aabb> = order.iter().map(|&i| boxes[i as usize]).collect();
+        for _ in 0..300 {
+            let origin = Point3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 12.0;
+            let direction =
+                Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) - Vec3::repeat(0.5);
+            let ray = Ray::new(origin, direction, 0.0);
+            assert_eq!(
+                nearest(&bvh, &boxes, &ray),
+                nearest(&ordered, &permuted, &ray)
+            );
         }
     }
 

@@ -3,16 +3,32 @@
 
 use std::sync::Arc;
 
-use super::triangle::{intersect_vertices, surface_vertices};
+use super::triangle::{intersect_edges, surface_vertices};
 use super::{Intersection, SurfaceHit, normalize_or};
 use crate::accel::Bvh;
-use crate::math::{Aabb, Ray};
+use crate::math::{Aabb, Point3, Ray, Vec3};
 use crate::scene::model::MeshData;
 
 #[derive(Debug)]
 pub struct Mesh {
     pub data: Arc<MeshData>,
+    /// Over `packed`, in its (leaf) order.
     bvh: Bvh,
+    /// The valid triangles in BVH leaf order, ready for the intersection
+    /// test: a leaf's triangles are adjacent in memory, with no index to
+    /// follow to their vertices.
+    packed: Vec<PackedTriangle>,
+    /// Index in `data.triangles` of each packed triangle.
+    original: Vec<u32>,
+}
+
+/// A triangle as its intersection test reads it.
+#[derive(Clone, Copy, Debug)]
+struct PackedTriangle {
+    p0: Point3,
+    /// `p1 - p0` and `p2 - p0`.
+    edge1: Vec3,
+    edge2: Vec3,
 }
 
 impl Mesh {
@@ -31,8 +47,24 @@ impl Mesh {
                 })
             })
             .collect();
-        let bvh = Bvh::build(&boxes);
-        Mesh { data, bvh }
+        let (bvh, original) = Bvh::build(&boxes).into_leaf_order();
+        let packed = original
+            .iter()
+            .map(|&index| {
+                let [a, b, c] = data.triangles[index as usize].map(|i| data.positions[i as usize]);
+                PackedTriangle {
+                    p0: a,
+                    edge1: b - a,
+                    edge2: c - a,
+                }
+            })
+            .collect();
+        Mesh {
+            data,
+            bvh,
+            packed,
+            original,
+        }
     }
 
     pub fn triangle_count(&self) -> usize {
@@ -47,13 +79,12 @@ impl Mesh {
     /// Nearest triangle hit: `u, v` are barycentrics, `index` the triangle.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
         let mut best = None;
-        let positions = &self.data.positions;
-        self.bvh.traverse(ray, t_min, t_max, |index, t_max| {
-            let [a, b, c] = self.data.triangles[index];
-            let (t, b1, b2) = intersect_vertices(
-                &positions[a as usize],
-                &positions[b as usize],
-                &positions[c as usize],
+        self.bvh.traverse(ray, t_min, t_max, |slot, t_max| {
+            let triangle = &self.packed[slot];
+            let (t, b1, b2) = intersect_edges(
+                &triangle.p0,
+                &triangle.edge1,
+                &triangle.edge2,
                 ray,
                 t_min,
                 t_max,
@@ -62,7 +93,7 @@ impl Mesh {
                 t,
                 u: b1,
                 v: b2,
-                index: index as u32,
+                index: self.original[slot],
             });
             Some(t)
         });
@@ -71,13 +102,12 @@ impl Mesh {
 
     /// Whether any triangle lies on the ray within `(t_min, t_max)`.
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        let positions = &self.data.positions;
-        self.bvh.any(ray, t_min, t_max, |index| {
-            let [a, b, c] = self.data.triangles[index];
-            intersect_vertices(
-                &positions[a as usize],
-                &positions[b as usize],
-                &positions[c as usize],
+        self.bvh.any(ray, t_min, t_max, |slot| {
+            let triangle = &self.packed[slot];
+            intersect_edges(
+                &triangle.p0,
+                &triangle.edge1,
+                &triangle.edge2,
                 ray,
                 t_min,
                 t_max,
@@ -119,7 +149,6 @@ impl Mesh {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::{Point3, Vec3};
 
     #[test]
     fn smooth_normals_and_uvs_are_interpolated() {

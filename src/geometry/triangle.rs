@@ -15,9 +15,21 @@ pub fn intersect_vertices(
     t_min: f64,
     t_max: f64,
 ) -> Option<(f64, f64, f64)> {
-    let edge1 = p1 - p0;
-    let edge2 = p2 - p0;
-    let p = ray.direction.cross(&edge2);
+    intersect_edges(p0, &(p1 - p0), &(p2 - p0), ray, t_min, t_max)
+}
+
+/// [`intersect_vertices`] of the triangle with vertex `p0` and edges
+/// `edge1 = p1 - p0`, `edge2 = p2 - p0`.
+#[inline]
+pub fn intersect_edges(
+    p0: &Point3,
+    edge1: &Vec3,
+    edge2: &Vec3,
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+) -> Option<(f64, f64, f64)> {
+    let p = ray.direction.cross(edge2);
     let determinant = edge1.dot(&p);
     // Exactly zero for a degenerate triangle or a ray in its plane; the tests
     // below also reject NaN produced by huge or non-finite input.
@@ -30,7 +42,7 @@ pub fn intersect_vertices(
     if !(0.0..=1.0).contains(&b1) {
         return None;
     }
-    let q = s.cross(&edge1);
+    let q = s.cross(edge1);
     let b2 = ray.direction.dot(&q) * inverse;
     if !(b2 >= 0.0 && b1 + b2 <= 1.0) {
         return None;
