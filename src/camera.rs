@@ -3,6 +3,7 @@
 
 use crate::math::{Point3, Ray, Vec3};
 use crate::scene::model::{CameraDesc, FovAxis};
+use crate::trig::sin_cos_turns;
 
 /// Image-plane scale of the original when no field of view is given:
 /// a vertical field of view of 2 atan(0.5135 / 2) = 28.8 degrees.
@@ -177,15 +178,15 @@ pub fn concentric_disk(square: [f64; 2]) -> (f64, f64) {
     if a == 0.0 && b == 0.0 {
         return (0.0, 0.0);
     }
-    let (radius, theta) = if a.abs() > b.abs() {
-        (a, std::f64::consts::FRAC_PI_4 * (b / a))
+    // The angle in turns: pi/4 (b/a), or pi/2 - pi/4 (a/b), over 2 pi.
+    let (radius, turns) = if a.abs() > b.abs() {
+        let turns = 0.125 * (b / a);
+        (a, if turns < 0.0 { turns + 1.0 } else { turns })
     } else {
-        (
-            b,
-            std::f64::consts::FRAC_PI_2 - std::f64::consts::FRAC_PI_4 * (a / b),
-        )
+        (b, 0.25 - 0.125 * (a / b))
     };
-    (radius * theta.cos(), radius * theta.sin())
+    let (sin, cos) = sin_cos_turns(turns);
+    (radius * cos, radius * sin)
 }
 
 #[cfg(test)]

@@ -4,12 +4,15 @@ use crate::math::{Vec3, orthonormal_basis};
 use crate::trig::sin_cos_turns;
 
 /// A cosine-weighted direction about the unit normal `n` (pdf = cos / pi).
+/// Unit to rounding: the frame is orthonormal, so no normalisation is spent.
 pub fn cosine_hemisphere(n: &Vec3, u: [f64; 2]) -> Vec3 {
     let (sin, cos) = sin_cos_turns(u[0]);
     let r2 = u[1];
     let r = r2.sqrt();
     let (t, b) = orthonormal_basis(n);
-    (t * (cos * r) + b * (sin * r) + n * (1.0 - r2).max(0.0).sqrt()).normalize()
+    let direction = t * (cos * r) + b * (sin * r) + n * (1.0 - r2).max(0.0).sqrt();
+    debug_assert!((direction.norm() - 1.0).abs() < 1e-9);
+    direction
 }
 
 /// Mirror reflection of the incoming direction `d` about `n`.

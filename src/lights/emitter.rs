@@ -222,8 +222,8 @@ fn sample_sphere(
     let sin_theta = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0).sqrt();
     let (sin_phi, cos_phi) = sin_cos_turns(u[1]);
     let (t, b) = orthonormal_basis(&cone.axis);
-    let direction =
-        (t * (sin_theta * cos_phi) + b * (sin_theta * sin_phi) + cone.axis * cos_theta).normalize();
+    // Unit to rounding in the orthonormal frame of the axis.
+    let direction = t * (sin_theta * cos_phi) + b * (sin_theta * sin_phi) + cone.axis * cos_theta;
     // Nearest intersection along the direction: d cos - sqrt(r^2 - d^2 sin^2).
     let d = cone.distance;
     let perpendicular2 = d * d * sin_theta * sin_theta;
