@@ -1,6 +1,7 @@
 //! The default estimator: the original's expected image with next-event
 //! estimation (NEE) and multiple importance sampling (MIS, power heuristic)
-//! at diffuse vertices, and Russian roulette on the path throughput.
+//! at diffuse vertices, light subpaths for caustics (see [`super::caustics`]),
+//! and Russian roulette on the path throughput.
 //!
 //! Bookkeeping of path lengths, so that the expectation is the original's:
 //! hit `k` (the camera hit is hit 1) adds its emission when `k <= max_depth + 1`,
@@ -9,9 +10,14 @@
 //! at every scattering vertex (`1..=max_depth`, the last one included), and
 //! the BSDF ray of that vertex, which finds hit `k + 1`, weights the emission
 //! there by the matching MIS weight. Both strategies thus cover exactly the
-//! same set of paths. Emission reached after a mirror or glass vertex, by a
-//! camera ray, or on an emitter that light sampling never picks (planes,
-//! revolution surfaces, ellipsoids) counts fully.
+//! same set of paths. Emission reached by a camera ray, after mirror or glass
+//! vertices, or on an emitter that light sampling never picks (planes,
+//! revolution surfaces, ellipsoids) counts fully, except for the paths that
+//! light subpaths also make: a diffuse vertex (or the camera ray's first
+//! vertex) `y`, found from a diffuse vertex `x`, then only mirror and glass
+//! up to the emitter. Those are weighted against light tracing and the
+//! connections by the ratio of `caustics`, which the path tracer's side
+//! keeps as a `CausticTrack`.
 //!
 //! Lobes are chosen as in [`super::original`], by rate; NEE belongs to the
 //! diffuse lobe only, with BRDF `color / pi` about the shading normal (the
