@@ -165,11 +165,16 @@ impl SplatSums {
         }
     }
 
-    /// Adds `value` to pixel `index` (row-major, row 0 at the top).
+    /// Adds `value` to pixel `index` (row-major, row 0 at the top),
+    /// saturating rather than wrapping.
     pub fn add(&self, index: usize, value: Color) {
         for (channel, v) in [value.r, value.g, value.b].into_iter().enumerate() {
-            if let Some(sum) = self.sums.get(3 * index + channel) {
-                sum.fetch_add(to_fixed(v), Ordering::Relaxed);
+            let fixed = to_fixed(v);
+            if let (Some(sum), true) = (self.sums.get(3 * index + channel), fixed > 0) {
+                // Never fails: the closure always returns `Some`.
+                let _ = sum.fetch_update(Ordering::Relaxed, Ordering::Relaxed, |total| {
+                    Some(total.saturating_add(fixed))
+                });
             }
         }
     }
@@ -194,6 +199,23 @@ impl SplatSums {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn splats_add_in_fixed_point_and_saturate() {
+        let mut film = Film::new(2, 1);
+        let sums = SplatSums::new(2);
+        sums.add(1, Color::new(0.5, 1e-9, -3.0));
+        sums.add(1, Color::new(0.25, f64::NAN, 2.0));
+        sums.add(0, Color::gray(1e300));
+        sums.add(0, Color::gray(1e300));
+        sums.add_light_paths(4);
+        sums.add_to(&mut film);
+        let image = film.to_image();
+        // (0.5 + 0.25) / 4 light paths; NaN and negative count as 0.
+        assert!((image.pixels[1].r - 0.1875).abs() < 1e-6);
+        assert!(image.pixels[1].g.abs() < 1e-6 && (image.pixels[1].b - 0.5).abs() < 1e-6);
+        assert!(image.pixels[0].r.is_finite() && image.pixels[0].r > 1e12);
+    }
 
     #[test]
     fn non_finite_samples_are_dropped_and_counted() {
