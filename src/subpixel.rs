@@ -4,7 +4,10 @@
 //! of at most half a pixel per axis. Over a multiple of four samples a pixel
 //! thus averages the radiance over the film with the density
 //! [`filter_density`], which light tracing needs to splat onto the right
-//! pixels with the right weight.
+//! pixels with the right weight. (With a sample count that is not a multiple
+//! of four the sub-pixels are sampled unevenly, as in the original, and the
+//! camera samples' filter differs slightly from this density, which light
+//! tracing keeps.)
 
 /// Film position (in pixels, `y` up from the bottom edge) of a sample of
 /// pixel (`x`, `y`) in sub-pixel `sub` (0..4), from two uniform numbers.
