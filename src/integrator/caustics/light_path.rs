@@ -20,9 +20,8 @@ const LIGHT_PATH_SALT: u64 = 0x11A7_C0DE_CA05_71C5;
 #[derive(Clone, Copy, Debug)]
 pub struct CausticVertex {
     pub point: Point3,
-    /// Unit geometric and shading normals on the side the light arrived from.
+    /// Unit geometric normal on the side the light arrived from.
     pub geometric: Vec3,
-    pub normal: Vec3,
     /// The diffuse lobe over its pick probability, times pi:
     /// `color * lobes.total()` (the BRDF is this over pi).
     pub lobe_weight: Color,
@@ -114,7 +113,6 @@ pub fn trace(
                 let y = CausticVertex {
                     point: at.point,
                     geometric: at.geometric,
-                    normal: at.normal,
                     lobe_weight: at.color * lobes.total(),
                     beta: beta * shading_ratio,
                     shading_ratio,
