@@ -66,6 +66,7 @@ impl Sampler {
     }
 
     /// The value of the next dimension, in `[0, 1)`.
+    #[inline]
     pub fn next_f64(&mut self) -> f64 {
         match self {
             Sampler::Independent(rng) => rng.next_f64(),
@@ -86,6 +87,7 @@ impl Sampler {
     /// The values of the next two dimensions. The Sobol' sampler first skips
     /// to an even dimension, so that the pair is one of the stratified pairs
     /// (0, 1), (2, 3), (4, 5), ...
+    #[inline]
     pub fn next_2d(&mut self) -> [f64; 2] {
         match self {
             Sampler::Independent(rng) => [rng.next_f64(), rng.next_f64()],
@@ -227,7 +229,10 @@ impl SobolStream {
         self.dimension
     }
 
-    /// The value of the next dimension, in `[0, 1)`.
+    /// The value of the next dimension, in `[0, 1)`. Inline: most calls
+    /// read a value of the current group or hash a padding dimension; the
+    /// work of starting a group is out of line.
+    #[inline]
     pub fn next_f64(&mut self) -> f64 {
         if self.dimension >= SOBOL_DIMENSIONS {
             if self.dimension == SOBOL_DIMENSIONS {
@@ -238,15 +243,22 @@ impl SobolStream {
         }
         let dimension_in_group = self.dimension as usize % sobol::DIMENSIONS;
         if dimension_in_group == 0 {
-            let group = self.dimension / sobol::DIMENSIONS as u32;
-            let group_seed = group_seed(self.pixel_seed, group, self.sample_index);
-            self.values = group_values(group_seed, self.sample_index);
+            self.start_group();
         }
         self.dimension = self.dimension.wrapping_add(1);
         to_unit(self.values[dimension_in_group])
     }
 
+    /// Computes the values of the group that starts at the next dimension.
+    #[inline(never)]
+    fn start_group(&mut self) {
+        let group = self.dimension / sobol::DIMENSIONS as u32;
+        let group_seed = group_seed(self.pixel_seed, group, self.sample_index);
+        self.values = group_values(group_seed, self.sample_index);
+    }
+
     /// The next two dimensions, starting from an even one.
+    #[inline]
     pub fn next_2d(&mut self) -> [f64; 2] {
         if self.dimension % 2 == 1 && self.dimension < SOBOL_DIMENSIONS {
             self.next_f64();
