@@ -158,6 +158,7 @@ pub struct SplatSums {
 }
 
 impl SplatSums {
+    /// Sums for a film of `pixels` pixels (0: none, splats are dropped).
     pub fn new(pixels: usize) -> SplatSums {
         SplatSums {
             sums: (0..3 * pixels).map(|_| AtomicU64::new(0)).collect(),

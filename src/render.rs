@@ -90,7 +90,8 @@ pub fn render_into(
     view.max_depth = settings.max_depth;
     view.camera = Some(camera.clone());
     view.light_paths &= settings.light_paths;
-    let splat_sums = SplatSums::new(width * height);
+    // Light tracing's sums, only where light subpaths run.
+    let splat_sums = SplatSums::new(if view.light_paths { width * height } else { 0 });
     let plan = SamplingPlan::for_scene(scene);
     let before = (film.samples(), film.dropped(), film.fireflies());
     let rows_done = AtomicUsize::new(0);

@@ -110,7 +110,8 @@ pub struct SceneView<'a> {
     /// Scattering vertices before a path ends (the original: 5).
     pub max_depth: u32,
     /// Whether the path integrator traces light subpaths for caustics (the
-    /// scene has emitters, and mirror or glass).
+    /// scene has mirror or glass and small enough emitters: see
+    /// [`caustics::prepare`]).
     pub light_paths: bool,
     /// The camera of the film being rendered, which light subpaths connect
     /// to (`None`: no light tracing, as for paths traced outside a render).
