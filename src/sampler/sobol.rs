@@ -74,40 +74,11 @@ pub fn sobol(index: u32, dimension: usize) -> u32 {
     value
 }
 
-/// `BYTE_TABLES[b][x]`: the XOR of the direction numbers selected by the bits
-/// of byte value `x` at byte position `b` of the index, for the four
-/// dimensions packed as `[u32; 4]` (16 KiB): four lookups make a point.
-static BYTE_TABLES: [[[u32; DIMENSIONS]; 256]; 4] = byte_tables();
-
-const fn byte_tables() -> [[[u32; DIMENSIONS]; 256]; 4] {
-    let mut tables = [[[0u32; DIMENSIONS]; 256]; 4];
-    let mut byte = 0;
-    while byte < 4 {
-        let mut x = 0;
-        while x < 256 {
-            let mut dimension = 0;
-            while dimension < DIMENSIONS {
-                let mut value = 0;
-                let mut bit = 0;
-                while bit < 8 {
-                    if (x >> bit) & 1 == 1 {
-                        value ^= DIRECTIONS[dimension][byte * 8 + bit];
-                    }
-                    bit += 1;
-                }
-                tables[byte][x][dimension] = value;
-                dimension += 1;
-            }
-            x += 1;
-        }
-        byte += 1;
-    }
-    tables
-}
-
-/// `REVERSED_TABLES[b][x]`: like [`BYTE_TABLES`], but for an index whose bits
-/// come in reversed order and giving bit-reversed values: entry bit `m` of
-/// the reversed index selects `reverse(v[31 - m])`. Owen scrambling works on
+/// `REVERSED_TABLES[b][x]`: the XOR of the direction numbers selected by the
+/// bits of byte value `x` at byte position `b` of a bit-reversed index, for
+/// the four dimensions packed as `[u32; 4]` (16 KiB), themselves
+/// bit-reversed: entry bit `m` of the reversed index selects
+/// `reverse(v[31 - m])`, and four lookups make a point. Owen scrambling works on
 /// bit-reversed values, so a scrambler can go from a reversed index to
 /// reversed points without reversing anything in between.
 static REVERSED_TABLES: [[[u32; DIMENSIONS]; 256]; 4] = reversed_tables();
@@ -154,43 +125,19 @@ pub fn sobol_all_reversed(reversed_index: u32) -> [u32; DIMENSIONS] {
     value
 }
 
-/// The points of all four dimensions for one index (four table lookups).
-#[inline]
-pub fn sobol_all(index: u32) -> [u32; DIMENSIONS] {
-    let mut value = [0u32; DIMENSIONS];
-    for (byte, table) in BYTE_TABLES.iter().enumerate() {
-        let entry = &table[((index >> (8 * byte)) & 0xff) as usize];
-        for d in 0..DIMENSIONS {
-            value[d] ^= entry[d];
-        }
-    }
-    value
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn all_dimensions_at_once_equal_each_dimension_alone() {
-        for index in [0u32, 1, 7, 12345, 0xdead_beef, u32::MAX] {
-            let all = sobol_all(index);
-            for (dimension, value) in all.iter().enumerate() {
-                assert_eq!(*value, sobol(index, dimension));
-            }
-        }
-    }
-
-    #[test]
     fn reversed_tables_give_reversed_points_of_the_reversed_index() {
         for index in [0u32, 1, 7, 12345, 0xdead_beef, u32::MAX, 0x8000_0000] {
-            let direct = sobol_all(index);
             let reversed = sobol_all_reversed(index.reverse_bits());
-            for d in 0..DIMENSIONS {
+            for (dimension, value) in reversed.iter().enumerate() {
                 assert_eq!(
-                    reversed[d],
-                    direct[d].reverse_bits(),
-                    "index {index:#x}, dimension {d}"
+                    *value,
+                    sobol(index, dimension).reverse_bits(),
+                    "index {index:#x}, dimension {dimension}"
                 );
             }
         }
