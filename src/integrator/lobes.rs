@@ -1,6 +1,6 @@
-//! The lobes of the rates material, shared by both integrators: which lobe a
-//! vertex scatters into (chosen by rate), the PA1 lights of its diffuse part,
-//! and smallpt's glass.
+//! The lobes of the rates material, shared by both integrators and the light
+//! subpaths: which lobe a vertex scatters into (chosen by rate), the choice
+//! of an emitter, the PA1 lights of the diffuse part, and smallpt's glass.
 
 use crate::color::Color;
 use crate::math::{Ray, Vec3};
@@ -47,8 +47,18 @@ impl Lobes {
         self.diffuse + self.specular + self.refract
     }
 
+    /// The lobe to scatter into, spending a sample dimension (for
+    /// [`Lobes::pick`]) only when there is a choice to make, so that the
+    /// stratified dimensions go to directions.
+    pub fn choose(&self, sampler: &mut Sampler) -> Lobe {
+        match self.only() {
+            Some(lobe) => lobe,
+            None => self.pick(sampler.next_f64()),
+        }
+    }
+
     /// The lobe when only one has a weight (no choice to make), else `None`.
-    pub fn only(&self) -> Option<Lobe> {
+    fn only(&self) -> Option<Lobe> {
         match (self.diffuse > 0.0, self.specular > 0.0, self.refract > 0.0) {
             (true, false, false) => Some(Lobe::Diffuse),
             (false, true, false) => Some(Lobe::Mirror),
@@ -68,6 +78,16 @@ impl Lobes {
         } else {
             Lobe::Glass
         }
+    }
+}
+
+/// The number that picks an emitter for a light sample or light subpath: a
+/// sample dimension only when there is more than one emitter to pick.
+pub fn emitter_choice(view: &SceneView, sampler: &mut Sampler) -> f64 {
+    if view.emitters.len() > 1 {
+        sampler.next_f64()
+    } else {
+        0.5
     }
 }
 

@@ -33,7 +33,7 @@ use crate::sampling::{cosine_hemisphere, reflect};
 use crate::shading::Shading;
 
 use super::caustics::{self, CausticVertex};
-use super::lobes::{GlassChoice, Lobe, Lobes, glass_direction, pa1_lights};
+use super::lobes::{GlassChoice, Lobe, Lobes, emitter_choice, glass_direction, pa1_lights};
 use super::{CameraSample, SceneView, Splats};
 
 /// Scattering vertices after which Russian roulette may end a path. Within
@@ -146,12 +146,7 @@ pub fn radiance(
         }
         // The lobe weight over its probability, as in the original.
         throughput *= at.color * lobes.total();
-        // A sample dimension is spent only on a real choice, so that the
-        // stratified dimensions go to directions.
-        let lobe = match lobes.only() {
-            Some(lobe) => lobe,
-            None => lobes.pick(sampler.next_f64()),
-        };
+        let lobe = lobes.choose(sampler);
         // Where the ray that found this vertex came from (for the caustic track).
         let arrived_from = origin.take();
         let direction = match lobe {
@@ -255,11 +250,7 @@ fn light_sample(view: &SceneView, at: &Shading, time: f64, sampler: &mut Sampler
     if view.emitters.is_empty() {
         return Color::BLACK;
     }
-    let select = if view.emitters.len() > 1 {
-        sampler.next_f64()
-    } else {
-        0.5
-    };
+    let select = emitter_choice(view, sampler);
     let u = sampler.next_2d();
     let Some(light) = view.emitters.sample(&at.point, time, select, u) else {
         return Color::BLACK;

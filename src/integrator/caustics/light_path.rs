@@ -5,7 +5,7 @@ use std::f64::consts::PI;
 
 use super::connect::splat_to_camera;
 use crate::color::Color;
-use crate::integrator::lobes::{GlassChoice, Lobe, Lobes, glass_direction};
+use crate::integrator::lobes::{GlassChoice, Lobe, Lobes, emitter_choice, glass_direction};
 use crate::integrator::{SceneView, Splats};
 use crate::math::{Point3, Ray, Vec3, offset_origin};
 use crate::sampler::Sampler;
@@ -59,11 +59,7 @@ pub fn trace(
     if share < 1.0 && sampler.next_f64() >= share {
         return None;
     }
-    let select = if view.emitters.len() > 1 {
-        sampler.next_f64()
-    } else {
-        0.5
-    };
+    let select = emitter_choice(view, &mut sampler);
     let u_point = sampler.next_2d();
     let u_side = sampler.next_f64();
     let u_direction = sampler.next_2d();
@@ -94,10 +90,7 @@ pub fn trace(
         if lobes.total() <= 0.0 {
             return None;
         }
-        let lobe = match lobes.only() {
-            Some(lobe) => lobe,
-            None => lobes.pick(sampler.next_f64()),
-        };
+        let lobe = lobes.choose(&mut sampler);
         let direction = match lobe {
             Lobe::Diffuse => {
                 if chain == 0 {
