@@ -12,6 +12,7 @@
 
 use std::f64::consts::PI;
 
+use super::cut::{Cap, Cuts};
 use super::emitter::{EmitterShape, uniform_sphere};
 use super::{Distribution, Emitters, LightPathStarts};
 use crate::color::Color;
@@ -162,10 +163,10 @@ impl Emitters {
                 if outward.dot(direction) <= 0.0 {
                     return 0.0;
                 }
-                match cuts.cap(&center, radius, viewpoint) {
-                    Some(cap) if cap.contains(&outward) => probability / cap.area(radius),
-                    Some(_) => 0.0,
-                    None => probability / (4.0 * PI * radius * radius),
+                let (cap, area) = sphere_region(&center, radius, &cuts, viewpoint);
+                match cap {
+                    Some(cap) if !cap.contains(&outward) => 0.0,
+                    _ => probability / area,
                 }
             }
             _ => {
@@ -238,6 +239,20 @@ fn solid_angle(shape: &EmitterShape, reference: &Point3) -> f64 {
     }
 }
 
+/// Where light subpaths leave a sphere from: the cap on the viewpoint's side
+/// of its cuts (`Some`), or the whole sphere; and that region's area.
+fn sphere_region(
+    center: &Point3,
+    radius: f64,
+    cuts: &Cuts,
+    viewpoint: &Point3,
+) -> (Option<Cap>, f64) {
+    match cuts.cap(center, radius, viewpoint) {
+        Some(cap) => (Some(cap), cap.area(radius)),
+        None => (None, 4.0 * PI * radius * radius),
+    }
+}
+
 /// A point of `shape` for light to leave: `(point, unit normal of the side
 /// emitted into, area density, number of sides)`. `u_side` picks the side of
 /// a two-sided shape.
@@ -256,9 +271,10 @@ fn emission_point(
             cuts,
         } => {
             let center = center + motion * time;
-            let (normal, area) = match cuts.cap(&center, radius, viewpoint) {
-                Some(cap) => (cap.sample(u), cap.area(radius)),
-                None => (uniform_sphere(u), 4.0 * PI * radius * radius),
+            let (cap, area) = sphere_region(&center, radius, &cuts, viewpoint);
+            let normal = match cap {
+                Some(cap) => cap.sample(u),
+                None => uniform_sphere(u),
             };
             Some((center + normal * radius, normal, 1.0 / area, 1.0))
         }
