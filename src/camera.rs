@@ -19,6 +19,9 @@ pub struct Camera {
     /// Image-plane axes: offsets of a full image width and height.
     plane_x: Vec3,
     plane_y: Vec3,
+    /// Their lengths: the image plane's extent at distance 1.
+    span_x: f64,
+    span_y: f64,
     right: Vec3,
     true_up: Vec3,
     canvas_distance: f64,
@@ -57,6 +60,8 @@ impl Camera {
             direction,
             plane_x: right * span_x,
             plane_y: true_up * span_y,
+            span_x,
+            span_y,
             right,
             true_up,
             canvas_distance: desc.canvas_distance,
@@ -141,14 +146,12 @@ impl Camera {
         } else {
             direction / along
         };
-        let span_x = self.plane_x.norm();
-        let span_y = self.plane_y.norm();
-        let film_x = (d.dot(&self.right) / span_x + 0.5) * self.width as f64;
-        let film_y = (d.dot(&self.true_up) / span_y + 0.5) * self.height as f64;
+        let film_x = (d.dot(&self.right) / self.span_x + 0.5) * self.width as f64;
+        let film_y = (d.dot(&self.true_up) / self.span_y + 0.5) * self.height as f64;
         // Film pixels per unit area of the plane at distance 1, times that
         // area per solid angle (1 / cos^3).
         let film_per_steradian =
-            self.width as f64 * self.height as f64 / (span_x * span_y * along.powi(3));
+            self.width as f64 * self.height as f64 / (self.span_x * self.span_y * along.powi(3));
         Some(Projection {
             film_x,
             film_y,
