@@ -7,17 +7,16 @@
 
 mod common;
 
-use common::mean_and_error;
+use common::statistic;
 use std::sync::Arc;
 
 use pathtracer::color::Color;
 use pathtracer::integrator::{Integrator, original::MAX_DEPTH};
 use pathtracer::math::{Matrix, Point3, Vec3};
-use pathtracer::render::{RenderSettings, render};
+use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Light, Material, MeshData, Object, Scene};
 use pathtracer::texture::Texture;
-use pathtracer::world::World;
 
 const WIDTH: u32 = 8;
 const HEIGHT: u32 = 8;
@@ -25,33 +24,20 @@ const RUNS: u64 = 32;
 
 /// Per run: the pixel values (channel averages), row-major.
 fn runs(scene: &Scene, integrator: Integrator, spp: u32) -> Vec<Vec<f64>> {
-    let world = World::build(scene);
-    (0..RUNS)
-        .map(|run| {
-            let settings = RenderSettings {
-                width: WIDTH,
-                height: HEIGHT,
-                spp,
-                seed: 1000 + run,
-                threads: None,
-                integrator,
-                max_depth: MAX_DEPTH,
-                sampler: SamplerKind::Independent,
-                progress: false,
-                clamp: None,
-                light_paths: true,
-            };
-            let (image, stats) = render(scene, &world, &settings).expect("renders");
-            assert_eq!(stats.dropped, 0, "NaN or infinite samples");
-            image.pixels.iter().map(Color::average).collect()
-        })
-        .collect()
-}
-
-/// Statistic `f` of a run (image mean or one pixel): its mean and error.
-fn statistic(runs: &[Vec<f64>], f: impl Fn(&[f64]) -> f64) -> (f64, f64) {
-    let values: Vec<f64> = runs.iter().map(|r| f(r)).collect();
-    mean_and_error(&values)
+    let settings = RenderSettings {
+        width: WIDTH,
+        height: HEIGHT,
+        spp,
+        seed: 0,
+        threads: None,
+        integrator,
+        max_depth: MAX_DEPTH,
+        sampler: SamplerKind::Independent,
+        progress: false,
+        clamp: None,
+        light_paths: true,
+    };
+    common::independent_runs(scene, &settings, 1000, RUNS)
 }
 
 fn image_mean(pixels: &[f64]) -> f64 {

@@ -9,7 +9,7 @@
 
 mod common;
 
-use common::mean_and_error;
+use common::statistic;
 use pathtracer::color::Color;
 use pathtracer::integrator::{Integrator, original::MAX_DEPTH};
 use pathtracer::math::{Point3, Vec3};
@@ -45,20 +45,12 @@ fn runs(
     spp: u32,
     count: u64,
 ) -> Vec<Vec<f64>> {
-    let world = World::build(scene);
-    (0..count)
-        .map(|run| {
-            let settings = settings(integrator, light_paths, spp, 500 + run);
-            let (image, stats) = render(scene, &world, &settings).expect("renders");
-            assert_eq!(stats.dropped, 0, "NaN or infinite samples");
-            image.pixels.iter().map(Color::average).collect()
-        })
-        .collect()
-}
-
-fn statistic(runs: &[Vec<f64>], f: impl Fn(&[f64]) -> f64) -> (f64, f64) {
-    let values: Vec<f64> = runs.iter().map(|r| f(r)).collect();
-    mean_and_error(&values)
+    common::independent_runs(
+        scene,
+        &settings(integrator, light_paths, spp, 0),
+        500,
+        count,
+    )
 }
 
 /// Asserts that two sets of runs agree in the image mean and in the pixels

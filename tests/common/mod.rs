@@ -9,7 +9,10 @@ pub use shapes::*;
 
 use std::path::{Path, PathBuf};
 
+use pathtracer::color::Color;
+use pathtracer::render::{RenderSettings, render};
 use pathtracer::scene::model::{Material, Object, Scene};
+use pathtracer::world::World;
 
 pub fn shared() -> Option<PathBuf> {
     let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared"));
@@ -80,6 +83,36 @@ pub fn mean_and_error(values: &[f64]) -> (f64, f64) {
     let mean = values.iter().sum::<f64>() / n;
     let variance = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
     (mean, (variance / n).sqrt())
+}
+
+/// `count` renders of `scene` with `settings` and seeds `first_seed`,
+/// `first_seed + 1`, ...: per run, the pixel values (channel averages),
+/// row-major from the top. No sample may be NaN or infinite.
+pub fn independent_runs(
+    scene: &Scene,
+    settings: &RenderSettings,
+    first_seed: u64,
+    count: u64,
+) -> Vec<Vec<f64>> {
+    let world = World::build(scene);
+    (0..count)
+        .map(|run| {
+            let settings = RenderSettings {
+                seed: first_seed + run,
+                ..settings.clone()
+            };
+            let (image, stats) = render(scene, &world, &settings).expect("renders");
+            assert_eq!(stats.dropped, 0, "NaN or infinite samples");
+            image.pixels.iter().map(Color::average).collect()
+        })
+        .collect()
+}
+
+/// Statistic `f` of independent runs (image mean or one pixel): its mean
+/// and standard error.
+pub fn statistic(runs: &[Vec<f64>], f: impl Fn(&[f64]) -> f64) -> (f64, f64) {
+    let values: Vec<f64> = runs.iter().map(|r| f(r)).collect();
+    mean_and_error(&values)
 }
 
 pub fn scene_with(materials: Vec<Material>, root: Object) -> Scene {
