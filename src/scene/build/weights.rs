@@ -156,9 +156,8 @@ pub fn resolve(
             specular: weights[1],
             refract: weights[2],
             ior,
-            texture: None,
-            normal_map: None,
             roughness: f.roughness.max(0.0),
+            ..Material::DEFAULT
         },
         texture: f.texture,
         normal_map: f.normal_map,
