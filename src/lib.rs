@@ -9,6 +9,7 @@
 
 pub mod accel;
 pub mod adaptive;
+pub mod bsdf;
 pub mod camera;
 pub mod color;
 pub mod converge;
