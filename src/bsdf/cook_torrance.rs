@@ -11,7 +11,8 @@ use super::microfacet::{Ggx, reflect};
 use crate::color::Color;
 use crate::math::Vec3;
 
-/// rub's value of pi.
+/// rub's value of pi (written as 3.14 in its source, on purpose here).
+#[allow(clippy::approx_constant)]
 const RUB_PI: f64 = 3.14;
 
 #[derive(Clone, Copy, Debug, PartialEq)]

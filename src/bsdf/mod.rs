@@ -99,7 +99,8 @@ impl Bsdf {
     /// weights and black lobes are dropped).
     pub fn push(&mut self, lobe: Lobe, weight: f64) {
         let albedo = lobe.albedo_estimate();
-        if self.len == MAX_LOBES || !(weight > 0.0) || !(albedo > 0.0) || !weight.is_finite() {
+        let usable = weight > 0.0 && weight.is_finite() && albedo > 0.0;
+        if self.len == MAX_LOBES || !usable {
             return;
         }
         self.lobes[self.len] = lobe;
