@@ -1,6 +1,7 @@
 //! What a surface hit means for light transport: the material, its colour
 //! (texture or constant), and normals oriented towards the incoming ray.
 
+use crate::bsdf::{Bsdf, Rules, from_material};
 use crate::color::Color;
 use crate::math::{Point3, Ray, Vec3, offset_origin};
 use crate::scene::model::{Material, Scene};
@@ -55,6 +56,23 @@ impl<'a> Shading<'a> {
             normal,
             entering,
         }
+    }
+
+    /// Makes `bsdf` the BSDF of this hit for light leaving towards `wo`
+    /// (unit, on the side of the normals).
+    #[inline(always)]
+    pub fn build_bsdf(&self, bsdf: &mut Bsdf, wo: &Vec3, rules: Rules) {
+        let cos_o = self.normal.dot(wo);
+        let (material, color) = (self.material, self.color);
+        from_material(
+            bsdf,
+            material,
+            color,
+            &self.normal,
+            self.entering,
+            cos_o,
+            rules,
+        );
     }
 
     /// The origin of a ray leaving this point in `direction`: pushed off the

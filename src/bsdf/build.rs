@@ -41,20 +41,23 @@ pub struct Rules {
     pub glass: GlassChoice,
 }
 
-/// The BSDF of `material` at a hit: `color` is its colour there (texture or
-/// constant), `normal` the unit shading normal on the side of `wo`,
-/// `entering` whether `wo` is outside (the side the geometric normal points
-/// to), `cos_o` the cosine of `wo` with the normal (for angle-dependent
-/// weights).
+/// Makes `bsdf` the BSDF of `material` at a hit (in place: a BSDF is a few
+/// hundred bytes, and a vertex should not copy them): `color` is the
+/// material's colour there (texture or constant), `normal` the unit shading
+/// normal on the side of `wo`, `entering` whether `wo` is outside (the side
+/// the geometric normal points to), `cos_o` the cosine of `wo` with the
+/// normal (for angle-dependent weights).
+#[inline(always)]
 pub fn from_material(
+    bsdf: &mut Bsdf,
     material: &Material,
     color: Color,
     normal: &Vec3,
     entering: bool,
     cos_o: f64,
     rules: Rules,
-) -> Bsdf {
-    let mut bsdf = Bsdf::new(normal);
+) {
+    bsdf.reset(normal);
     let (diffuse, specular, refract) = match material.angular_weights {
         None => (material.diffuse, material.specular, material.refract),
         Some(a) => {
@@ -128,5 +131,4 @@ pub fn from_material(
         };
         bsdf.push(Lobe::Conductor(lobe), 1.0);
     }
-    bsdf
 }

@@ -70,8 +70,8 @@ mod tests {
     fn exact_reflectance_is_the_same_from_both_sides() {
         // Stokes: a ray and its refracted reverse see the same reflectance.
         let (eta_i, eta_t) = (1.0, 1.5);
-        for cos_i in [0.2, 0.5, 0.9] {
-            let sin_t = (1.0 - cos_i * cos_i as f64).sqrt() * eta_i / eta_t;
+        for cos_i in [0.2_f64, 0.5, 0.9] {
+            let sin_t = (1.0 - cos_i * cos_i).sqrt() * eta_i / eta_t;
             let cos_t = (1.0 - sin_t * sin_t).sqrt();
             let a = dielectric(DielectricFresnel::Exact, cos_i, eta_i, eta_t);
             let b = dielectric(DielectricFresnel::Exact, cos_t, eta_t, eta_i);

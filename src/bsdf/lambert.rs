@@ -13,6 +13,7 @@ pub struct Lambert {
 }
 
 impl Lambert {
+    #[inline]
     pub fn sample(&self, u: [f64; 2]) -> LobeSample {
         let wi = cosine_hemisphere(u);
         LobeSample {

@@ -41,6 +41,7 @@ pub enum Lobe {
 
 impl Lobe {
     /// Whether it scatters into single directions (mirror, smooth glass).
+    #[inline]
     pub fn is_delta(&self) -> bool {
         match self {
             Lobe::Conductor(c) => c.is_delta(),
@@ -62,6 +63,7 @@ impl Lobe {
     /// About how much the lobe reflects (its mean tint; a Schlick term's
     /// mean over the cosine-weighted hemisphere): what lobes are chosen by.
     /// 0 for a lobe that reflects nothing.
+    #[inline]
     pub fn albedo_estimate(&self) -> f64 {
         let tint = match self {
             Lobe::Lambert(l) => l.albedo,
@@ -78,6 +80,7 @@ impl Lobe {
         tint.average().max(0.0)
     }
 
+    #[inline]
     pub fn sample(&self, wo: &Vec3, uc: f64, u: [f64; 2]) -> Option<LobeSample> {
         match self {
             Lobe::Lambert(l) => Some(l.sample(u)),

@@ -1,10 +1,17 @@
-//! The point and directional lights of PA1 scenes, added at diffuse vertices.
+//! The point and directional lights of PA1 scenes, added at every vertex.
 //!
-//! The course framework shades with `albedo * color * max(0, n . l)` and no
-//! distance falloff; the port adds exactly that radiance with a shadow ray, so
-//! that a PA1 scene looks as its author saw it.
+//! The course framework shades a diffuse surface with `albedo * color *
+//! max(0, n . l)` and no distance falloff; the port adds exactly that, with
+//! a shadow ray: a light delivers the irradiance `pi * color` (falling off
+//! with the cosine), which the BSDF turns into radiance, `pi * color *
+//! f(wo, l) cos`. For a Lambert surface that is the framework's term; a
+//! Phong lobe adds its highlight, a glossy conductor its reflection.
 
+use std::f64::consts::PI;
+
+use crate::bsdf::Bsdf;
 use crate::color::Color;
+use crate::math::{Ray, Vec3};
 use crate::scene::model::{Light, Scene};
 use crate::shading::Shading;
 use crate::world::World;
@@ -20,9 +27,9 @@ pub fn direct_lights(scene: &Scene) -> &[Light] {
     if has_emitter { &[] } else { &scene.lights }
 }
 
-/// Radiance reflected at a diffuse vertex from the point and directional lights.
-/// The caller weights it by the diffuse rate and the path throughput.
-pub fn direct(world: &World, lights: &[Light], at: &Shading) -> Color {
+/// Radiance reflected towards `wo` from the point and directional lights
+/// (the caller multiplies by the path throughput).
+pub fn direct(world: &World, lights: &[Light], at: &Shading, bsdf: &Bsdf, wo: &Vec3) -> Color {
     let mut sum = Color::BLACK;
     for light in lights {
         let (to_light, distance, color) = match light {
@@ -44,16 +51,19 @@ pub fn direct(world: &World, lights: &[Light], at: &Shading) -> Color {
             // scene builder adds it): found by rays, not here.
             Light::Disk { .. } | Light::Area { .. } => continue,
         };
-        let cosine = at.normal.dot(&to_light);
-        if cosine <= 0.0 || at.geometric.dot(&to_light) <= 0.0 {
+        if at.geometric.dot(&to_light) <= 0.0 {
+            continue;
+        }
+        let reflected = bsdf.eval(wo, &to_light);
+        if reflected.is_black() {
             continue;
         }
         let origin = at.spawn_origin(&to_light);
-        let shadow = crate::math::Ray::new(origin, to_light, 0.0);
+        let shadow = Ray::new(origin, to_light, 0.0);
         if world.occluded(&shadow, 0.0, distance * (1.0 - 1e-9)) {
             continue;
         }
-        sum += at.color * color * cosine;
+        sum += reflected * color * PI;
     }
     sum
 }

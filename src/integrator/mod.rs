@@ -2,10 +2,11 @@
 
 pub mod caustics;
 pub mod lights;
-pub mod lobes;
 pub mod original;
 pub mod path;
+pub mod scatter;
 
+use crate::bsdf::DielectricFresnel;
 use crate::camera::Camera;
 use crate::color::Color;
 use crate::lights::Emitters;
@@ -116,6 +117,8 @@ pub struct SceneView<'a> {
     /// The camera of the film being rendered, which light subpaths connect
     /// to (`None`: no light tracing, as for paths traced outside a render).
     pub camera: Option<Camera>,
+    /// How dielectrics reflect (the look's convention).
+    pub fresnel: DielectricFresnel,
 }
 
 impl<'a> SceneView<'a> {
@@ -129,6 +132,7 @@ impl<'a> SceneView<'a> {
             emitters,
             max_depth: original::MAX_DEPTH,
             camera: None,
+            fresnel: DielectricFresnel::default(),
         }
     }
 }

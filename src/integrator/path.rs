@@ -19,21 +19,24 @@
 //! connections by the ratio of `caustics`, which the path tracer's side
 //! keeps as a `CausticTrack`.
 //!
-//! Lobes are chosen as in [`super::original`], by rate; NEE belongs to the
-//! diffuse lobe only, with BRDF `color / pi` about the shading normal (the
-//! cosine hemisphere of the original). The PA1 point and directional lights
-//! are added exactly as the original does.
+//! Each vertex samples its BSDF first. When the sample is a continuous
+//! lobe's (diffuse, Phong, glossy), the vertex also takes a light sample,
+//! weighted by the BSDF's `eval` over the probability of having chosen a
+//! continuous lobe, and MIS weights both strategies with the BSDF's density
+//! conditioned on that choice; after a delta lobe (mirror, smooth glass)
+//! the emission found counts fully. Light subpaths connect only to, and
+//! end only at, vertices whose continuous part is Lambert (the densities of
+//! their MIS weights are the cosine's). The PA1 point and directional
+//! lights are added at every vertex, as the original does.
 
-use std::f64::consts::PI;
-
+use crate::bsdf::{Bsdf, GlassChoice};
 use crate::color::Color;
 use crate::math::{Point3, Ray, Vec3};
 use crate::sampler::Sampler;
-use crate::sampling::{cosine_hemisphere, reflect};
 use crate::shading::Shading;
 
 use super::caustics::{self, CausticVertex};
-use super::lobes::{GlassChoice, Lobe, Lobes, emitter_choice, glass_direction, pa1_lights};
+use super::scatter::{bsdf_at, emitter_choice, pa1_lights, sample};
 use super::{CameraSample, SceneView, Splats};
 
 /// Scattering vertices after which Russian roulette may end a path. Within
@@ -46,17 +49,20 @@ const ROULETTE_DEPTH: u32 = 5;
 /// not find the emitter itself.
 const SHADOW_SHORTENING: f64 = 1e-7;
 
-/// Where the current ray left a diffuse vertex: what MIS needs to weight the
-/// emission the ray finds.
+/// Where the current ray left a vertex by a continuous lobe: what MIS needs
+/// to weight the emission the ray finds.
 #[derive(Clone, Copy)]
-struct DiffuseOrigin {
+struct SmoothOrigin {
     point: Point3,
-    /// Density of the ray's direction under cosine sampling.
+    /// Density of the ray's direction given that a continuous lobe was chosen.
     pdf: f64,
+    /// Whether the vertex's continuous part is Lambert (light subpaths
+    /// connect to such vertices only).
+    lambert: bool,
 }
 
-/// The path tracer's side of a caustic connection: the last diffuse vertex
-/// `y` that a bounce from a diffuse vertex `x` found, and the specular
+/// The path tracer's side of a caustic connection: the last Lambert vertex
+/// `y` that a bounce from a Lambert vertex `x` found, and the specular
 /// vertices since.
 #[derive(Clone, Copy)]
 struct CausticTrack {
@@ -71,7 +77,7 @@ struct CausticTrack {
 /// The `edge` of a caustic track (see `caustics`).
 #[derive(Clone, Copy)]
 enum Edge {
-    /// `(cos_x / pi) (cos_y / d^2)` of a bounce from a diffuse `x`.
+    /// `(cos_x / pi) (cos_y / d^2)` of a bounce from a Lambert `x`.
     Bounce(f64),
     /// The camera ray found `y` (at `point`, geometric `normal` facing the
     /// camera): computed when needed, which is rarely.
@@ -90,7 +96,7 @@ impl Edge {
 pub fn radiance(
     view: &SceneView,
     mut ray: Ray,
-    sample: &CameraSample,
+    sample_of: &CameraSample,
     sampler: &mut Sampler,
     splats: &mut Splats,
 ) -> Color {
@@ -98,7 +104,7 @@ pub fn radiance(
     let mut throughput = Color::WHITE;
     let mut depth = 0;
     // `None`: the ray came from the camera or a delta lobe (weight 1).
-    let mut origin: Option<DiffuseOrigin> = None;
+    let mut origin: Option<SmoothOrigin> = None;
     let mut track: Option<CausticTrack> = None;
     // The light subpath of the caustic connections; every camera sample
     // traces one (light tracing divides by their number).
@@ -108,6 +114,7 @@ pub fn radiance(
     } else {
         None
     };
+    let mut bsdf = Bsdf::new(&ray.direction);
     loop {
         let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
             if depth == 0 {
@@ -119,7 +126,8 @@ pub fn radiance(
         let material = at.material;
         if !material.emission.is_black() {
             let weight = match (origin, track) {
-                (None, Some(track)) if track.chain > 0 => match track.edge.density(view, sample) {
+                (None, Some(track)) if track.chain > 0 => match track.edge.density(view, sample_of)
+                {
                     Some(edge) => {
                         let density =
                             caustics::emission_density(view, ray.time, &hit, &-ray.direction);
@@ -136,47 +144,48 @@ pub fn radiance(
             result += throughput * material.emission * weight;
         }
         depth += 1;
-        if depth > view.max_depth || at.color.is_black() {
+        if depth > view.max_depth {
             break;
         }
-        let lobes = Lobes::of(material);
-        result += throughput * pa1_lights(view, &at, &lobes);
-        if lobes.total() <= 0.0 {
+        let wo = -ray.direction;
+        bsdf_at(view, &at, &wo, GlassChoice::Fresnel, &mut bsdf);
+        if bsdf.is_black() {
             break;
         }
-        // The lobe weight over its probability, as in the original.
-        throughput *= at.color * lobes.total();
-        let lobe = lobes.choose(sampler);
+        result += throughput * pa1_lights(view, &at, &bsdf, &wo);
+        let Some(scattered) = sample(&bsdf, &wo, sampler) else {
+            break;
+        };
         // Where the ray that found this vertex came from (for the caustic track).
         let arrived_from = origin.take();
-        let direction = match lobe {
-            Lobe::Diffuse => {
-                result += throughput * light_sample(view, &at, ray.time, sampler);
-                if let Some(y) = light_path.filter(|y| depth + 1 + y.chain <= view.max_depth) {
-                    result += throughput * caustics::connect(view, &at, &y);
-                }
-                let direction = cosine_hemisphere(&at.normal, sampler.next_2d());
-                track = match arrived_from {
-                    _ if !view.light_paths => None,
-                    Some(from) => caustic_track(&from, &at, &ray, &direction),
-                    None if depth == 1 => camera_track(&at, &direction),
-                    None => None,
-                };
-                origin = Some(DiffuseOrigin {
-                    point: at.point,
-                    pdf: at.normal.dot(&direction).max(0.0) / PI,
-                });
-                direction
+        let direction = scattered.wi;
+        if scattered.delta {
+            count_chain_vertex(&mut track);
+        } else {
+            let smooth = bsdf.smooth_probability();
+            result += throughput * light_sample(view, &at, &bsdf, &wo, smooth, ray.time, sampler);
+            let lambert = bsdf.lambert();
+            if let Some(f) = lambert
+                && let Some(y) = light_path.filter(|y| depth + 1 + y.chain <= view.max_depth)
+            {
+                result += throughput * caustics::connect(view, &at, f / smooth, &y);
             }
-            Lobe::Mirror => {
-                count_chain_vertex(&mut track);
-                reflect(&ray.direction, &at.normal)
-            }
-            Lobe::Glass => {
-                count_chain_vertex(&mut track);
-                glass_direction(&ray, &at, sampler, &mut throughput, GlassChoice::Fresnel)
-            }
-        };
+            track = match arrived_from {
+                _ if !view.light_paths || lambert.is_none() => None,
+                Some(from) if from.lambert => caustic_track(&from, &at, &ray, &direction),
+                None if depth == 1 => camera_track(&at, &direction),
+                _ => None,
+            };
+            origin = Some(SmoothOrigin {
+                point: at.point,
+                pdf: scattered.pdf / smooth,
+                lambert: lambert.is_some(),
+            });
+        }
+        throughput *= scattered.weight;
+        if throughput.is_black() {
+            break;
+        }
         if depth >= ROULETTE_DEPTH {
             // The square root keeps dim paths alive longer than the plain
             // throughput would (10% better efficiency on the report scenes).
@@ -198,7 +207,7 @@ pub fn radiance(
 /// the diffuse vertex `from` (as `x`) and left in `direction`; `None` where
 /// a caustic connection could not make the path.
 fn caustic_track(
-    from: &DiffuseOrigin,
+    from: &SmoothOrigin,
     at: &Shading,
     ray: &Ray,
     direction: &Vec3,
@@ -243,10 +252,19 @@ fn count_chain_vertex(track: &mut Option<CausticTrack>) {
     }
 }
 
-/// One light sample at a diffuse vertex, MIS-weighted against cosine
-/// sampling: `(1/pi) L_e cos / pdf_light * w_light`. The caller multiplies by
-/// the throughput, which already holds the vertex colour and lobe weight.
-fn light_sample(view: &SceneView, at: &Shading, time: f64, sampler: &mut Sampler) -> Color {
+/// One light sample at a vertex that chose a continuous lobe (of total
+/// probability `smooth`), MIS-weighted against BSDF sampling:
+/// `L_e f |cos| / (pdf_light smooth) * w_light`. The caller multiplies by
+/// the throughput.
+fn light_sample(
+    view: &SceneView,
+    at: &Shading,
+    bsdf: &Bsdf,
+    wo: &Vec3,
+    smooth: f64,
+    time: f64,
+    sampler: &mut Sampler,
+) -> Color {
     if view.emitters.is_empty() {
         return Color::BLACK;
     }
@@ -255,8 +273,8 @@ fn light_sample(view: &SceneView, at: &Shading, time: f64, sampler: &mut Sampler
     let Some(light) = view.emitters.sample(&at.point, time, select, u) else {
         return Color::BLACK;
     };
-    let cosine = at.normal.dot(&light.direction);
-    if cosine <= 0.0 {
+    let reflected = bsdf.eval(wo, &light.direction);
+    if reflected.is_black() {
         return Color::BLACK;
     }
     let shadow = Ray::new(at.spawn_origin(&light.direction), light.direction, time);
@@ -266,9 +284,9 @@ fn light_sample(view: &SceneView, at: &Shading, time: f64, sampler: &mut Sampler
     {
         return Color::BLACK;
     }
-    let bsdf_pdf = cosine / PI;
+    let bsdf_pdf = bsdf.pdf(wo, &light.direction) / smooth;
     let weight = power_heuristic(light.pdf, bsdf_pdf);
-    light.emission * (cosine / PI / light.pdf * weight)
+    light.emission * reflected * (weight / (light.pdf * smooth))
 }
 
 /// The power heuristic (exponent 2) for one sample of density `f` against

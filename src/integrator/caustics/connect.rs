@@ -15,10 +15,11 @@ use crate::subpixel::{covering_pixels, filter_density};
 /// Shadow rays stop this fraction short of their target.
 const SHADOW_SHORTENING: f64 = 1e-7;
 
-/// The caustic light that `y` sends to the camera path's diffuse vertex `at`
-/// (without the camera path's throughput, which already holds the lobe
-/// weight of `at`), MIS-weighted against the path tracer.
-pub fn connect(view: &SceneView, at: &Shading, y: &CausticVertex) -> Color {
+/// The caustic light that `y` sends to the camera path's Lambert vertex
+/// `at`, whose BRDF over the probability of its lobe choice is `f` (the
+/// caller multiplies by the camera path's throughput), MIS-weighted against
+/// the path tracer.
+pub fn connect(view: &SceneView, at: &Shading, f: Color, y: &CausticVertex) -> Color {
     let offset = y.point - at.point;
     let distance_squared = offset.norm_squared();
     let distance = distance_squared.sqrt();
@@ -38,10 +39,8 @@ pub fn connect(view: &SceneView, at: &Shading, y: &CausticVertex) -> Color {
         return Color::BLACK;
     }
     let weight = connection_weight(edge, y.shading_ratio, y.emission_density);
-    // (cos_x / pi) (cos_y / d^2) = edge: the BRDF of x over its lobe
-    // probability (its colour is in the caller's throughput) with the
-    // geometry of the edge; then the BRDF of y and the light's weight.
-    y.beta * y.lobe_weight * (edge / PI * weight)
+    // The BRDFs of x and y, the geometry of the edge, the light's weight.
+    f * y.f * y.beta * (edge * PI * weight)
 }
 
 /// `(cos_x / pi) (cos_y / d^2)`: the path tracer's density, in area at `y`,
@@ -143,7 +142,7 @@ pub fn splat_to_camera(
     }
     // Radiance towards the eye: the BRDF of y times the subpath's weight;
     // per pixel the filter density and J, over light tracing's share.
-    let radiance = y.beta * y.lobe_weight * (1.0 / PI);
+    let radiance = y.beta * y.f;
     for (x, pixel_y, density) in pixels {
         let edge = camera_edge_for(camera, x, pixel_y, &projection, jacobian);
         let ratio = density_ratio(edge, y.shading_ratio, y.emission_density);

@@ -1,30 +1,31 @@
 //! The light subpath of a camera sample: from an emitter through mirrors and
-//! glass to the first vertex where the diffuse lobe is chosen.
+//! glass (delta lobes) to the first vertex where a continuous lobe is
+//! chosen, which must be Lambert.
 
 use std::f64::consts::PI;
 
 use super::connect::splat_to_camera;
+use crate::bsdf::{Bsdf, GlassChoice};
 use crate::color::Color;
-use crate::integrator::lobes::{GlassChoice, Lobe, Lobes, emitter_choice, glass_direction};
+use crate::integrator::scatter::{bsdf_at, emitter_choice, sample};
 use crate::integrator::{SceneView, Splats};
 use crate::math::{Point3, Ray, Vec3, offset_origin};
 use crate::sampler::Sampler;
-use crate::sampling::{cosine_hemisphere, reflect};
+use crate::sampling::cosine_hemisphere;
 use crate::shading::Shading;
 
 /// Salt of the light subpath's sampler (see [`Sampler::fork`]).
 const LIGHT_PATH_SALT: u64 = 0x11A7_C0DE_CA05_71C5;
 
-/// The end `y` of a light subpath: a vertex where the diffuse lobe was
-/// chosen after at least one specular vertex.
+/// The end `y` of a light subpath: a vertex where a continuous lobe was
+/// chosen after at least one specular vertex, its continuous part Lambert.
 #[derive(Clone, Copy, Debug)]
 pub struct CausticVertex {
     pub point: Point3,
     /// Unit geometric normal on the side the light arrived from.
     pub geometric: Vec3,
-    /// The diffuse lobe over its pick probability, times pi:
-    /// `color * lobes.total()` (the BRDF is this over pi).
-    pub lobe_weight: Color,
+    /// The BRDF of the Lambert part over the probability of choosing it.
+    pub f: Color,
     /// The subpath's weight arriving at `y` (emission over densities,
     /// specular weights, shading-normal correction).
     pub beta: Color,
@@ -80,58 +81,51 @@ pub fn trace(
         time,
     );
     let mut chain = 0;
+    let mut bsdf = Bsdf::new(&direction);
     loop {
         let hit = view.world.intersect(&ray, 0.0, f64::INFINITY)?;
         let at = Shading::new(view.scene, &hit, &ray);
-        if at.color.is_black() {
+        let towards_light = -ray.direction;
+        bsdf_at(view, &at, &towards_light, GlassChoice::Fresnel, &mut bsdf);
+        if bsdf.is_black() {
             return None;
         }
-        let lobes = Lobes::of(at.material);
-        if lobes.total() <= 0.0 {
-            return None;
-        }
-        let lobe = lobes.choose(&mut sampler);
-        let direction = match lobe {
-            Lobe::Diffuse => {
-                if chain == 0 {
-                    // Direct light: next-event estimation's business.
-                    return None;
-                }
-                let towards_light = -ray.direction;
-                let shading_ratio =
-                    at.normal.dot(&towards_light) / at.geometric.dot(&towards_light);
-                if !(shading_ratio > 0.0 && shading_ratio.is_finite()) {
-                    return None;
-                }
-                let y = CausticVertex {
-                    point: at.point,
-                    geometric: at.geometric,
-                    lobe_weight: at.color * lobes.total(),
-                    beta: beta * shading_ratio,
-                    shading_ratio,
-                    emission_density,
-                    chain,
-                    time,
+        let scattered = sample(&bsdf, &towards_light, &mut sampler)?;
+        if !scattered.delta {
+            if chain == 0 {
+                // Direct light: next-event estimation's business.
+                return None;
+            }
+            let lambert = bsdf.lambert()?;
+            let shading_ratio = at.normal.dot(&towards_light) / at.geometric.dot(&towards_light);
+            if !(shading_ratio > 0.0 && shading_ratio.is_finite()) {
+                return None;
+            }
+            let y = CausticVertex {
+                point: at.point,
+                geometric: at.geometric,
+                f: lambert / bsdf.smooth_probability(),
+                beta: beta * shading_ratio,
+                shading_ratio,
+                emission_density,
+                chain,
+                time,
+            };
+            if let Some(camera) = &view.camera {
+                let lens = if camera.has_lens() {
+                    sampler.next_2d()
+                } else {
+                    [0.5, 0.5]
                 };
-                if let Some(camera) = &view.camera {
-                    let lens = if camera.has_lens() {
-                        sampler.next_2d()
-                    } else {
-                        [0.5, 0.5]
-                    };
-                    splat_to_camera(view, camera, &y, lens, splats);
-                }
-                return Some(y);
+                splat_to_camera(view, camera, &y, lens, splats);
             }
-            Lobe::Mirror => {
-                beta *= at.color * lobes.total();
-                reflect(&ray.direction, &at.normal)
-            }
-            Lobe::Glass => {
-                beta *= at.color * lobes.total();
-                glass_direction(&ray, &at, &mut sampler, &mut beta, GlassChoice::Fresnel)
-            }
-        };
+            return Some(y);
+        }
+        beta *= scattered.weight;
+        if beta.is_black() {
+            return None;
+        }
+        let direction = scattered.wi;
         chain += 1;
         if chain > max_chain {
             return None;

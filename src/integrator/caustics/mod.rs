@@ -61,7 +61,7 @@ pub fn prepare(scene: &Scene, world: &World, emitters: &mut Emitters) -> bool {
         scene
             .materials
             .get(material)
-            .is_some_and(|m| m.specular > 0.0 || m.refract > 0.0)
+            .is_some_and(|m| m.has_delta_lobe())
     };
     let casters: Vec<_> = world
         .primitives()

@@ -1,0 +1,61 @@
+//! What every estimator does at a surface, written against the BSDF
+//! contract: build the BSDF of a hit, sample it spending sample dimensions
+//! only on what it reads, pick an emitter, and add the PA1 lights.
+
+use crate::bsdf::{Bsdf, BsdfSample, GlassChoice, Rules};
+use crate::color::Color;
+use crate::math::Vec3;
+use crate::sampler::Sampler;
+use crate::shading::Shading;
+
+use super::{SceneView, lights};
+
+/// Makes `bsdf` the BSDF of `at` for light leaving towards `wo`, with the
+/// view's conventions and the estimator's way of choosing between
+/// reflection and refraction.
+#[inline(always)]
+pub fn bsdf_at(view: &SceneView, at: &Shading, wo: &Vec3, glass: GlassChoice, bsdf: &mut Bsdf) {
+    let rules = Rules {
+        fresnel: view.fresnel,
+        glass,
+    };
+    at.build_bsdf(bsdf, wo, rules);
+}
+
+/// A direction from `bsdf` for `wo`: the lobe choice and the direction are
+/// drawn from `sampler` only when the BSDF reads them (a perfect mirror
+/// reads nothing), so that the stratified dimensions go to real choices.
+#[inline]
+pub fn sample(bsdf: &Bsdf, wo: &Vec3, sampler: &mut Sampler) -> Option<BsdfSample> {
+    let uc = if bsdf.reads_choice() {
+        sampler.next_f64()
+    } else {
+        0.5
+    };
+    let u = if bsdf.reads_direction() {
+        sampler.next_2d()
+    } else {
+        [0.5, 0.5]
+    };
+    bsdf.sample(wo, uc, u)
+}
+
+/// The number that picks an emitter for a light sample or light subpath: a
+/// sample dimension only when there is more than one emitter to pick.
+pub fn emitter_choice(view: &SceneView, sampler: &mut Sampler) -> f64 {
+    if view.emitters.len() > 1 {
+        sampler.next_f64()
+    } else {
+        0.5
+    }
+}
+
+/// Radiance of the PA1 point and directional lights at this vertex (the
+/// caller multiplies by the throughput).
+pub fn pa1_lights(view: &SceneView, at: &Shading, bsdf: &Bsdf, wo: &Vec3) -> Color {
+    if view.direct_lights.is_empty() {
+        Color::BLACK
+    } else {
+        lights::direct(view.world, view.direct_lights, at, bsdf, wo)
+    }
+}
