@@ -28,7 +28,7 @@ use super::phong::Phong;
 use super::rough_dielectric::RoughDielectric;
 use crate::color::Color;
 use crate::math::Vec3;
-use crate::scene::model::{ConductorFresnel, DiffuseModel, MIN_ROUGHNESS, Material};
+use crate::scene::model::{AngularWeights, DiffuseModel, MIN_ROUGHNESS, Material};
 
 /// Diffuse rates at or below this are ignored (the original's threshold).
 pub const MIN_DIFFUSE_RATE: f64 = 1e-4;
@@ -58,13 +58,9 @@ pub fn from_material(
     rules: Rules,
 ) {
     bsdf.reset(normal);
-    let (diffuse, specular, refract) = match material.angular_weights {
+    let (diffuse, specular, refract) = match &material.angular_weights {
         None => (material.diffuse, material.specular, material.refract),
-        Some(a) => {
-            let reflection = a.base + a.scale * (1.0 - cos_o.clamp(0.0, 1.0)).powf(a.power);
-            let total = a.base + a.scale;
-            (1.0 - total, reflection, total - reflection)
-        }
+        Some(a) => a.weights(cos_o, entering, material.ior),
     };
     if diffuse > MIN_DIFFUSE_RATE {
         let lobe = match material.diffuse_model {
@@ -125,10 +121,35 @@ pub fn from_material(
     }
     if let Some(coat) = material.coat {
         let lobe = Conductor {
-            tint: coat.f0,
+            tint: coat.color,
             alpha: coat.alpha,
-            fresnel: ConductorFresnel::Schlick,
+            fresnel: coat.fresnel,
         };
         bsdf.push(Lobe::Conductor(lobe), 1.0);
+    }
+}
+
+impl AngularWeights {
+    /// (diffuse, specular, refract) for light leaving at `cos_o` on the
+    /// outside (`entering`) or the inside of a dielectric of index `ior`.
+    pub fn weights(&self, cos_o: f64, entering: bool, ior: f64) -> (f64, f64, f64) {
+        let total = self.base + self.scale;
+        let c = cos_o.clamp(0.0, 1.0);
+        let falloff = (1.0 - c).powf(self.power);
+        let reflection = if entering || ior <= 1.0 {
+            self.base + self.scale * falloff
+        } else if (1.0 - c * c) * ior * ior >= 1.0 {
+            // Beyond the critical angle.
+            total
+        } else {
+            let critical = 1.0 - (1.0 - 1.0 / (ior * ior)).sqrt();
+            self.base + self.scale * falloff / critical.powf(self.power)
+        };
+        let reflection = reflection.clamp(0.0, total.max(0.0));
+        (
+            (1.0 - total).max(0.0),
+            reflection,
+            (total - reflection).max(0.0),
+        )
     }
 }

@@ -126,15 +126,12 @@ fn parse_dialect(name: &str) -> Result<Dialect, String> {
     })
 }
 
-/// Loads a scene for rendering, printing its warnings and the features it
-/// uses that are not rendered.
+/// Loads a scene for rendering, printing its warnings (fields that are
+/// not rendered among them).
 pub fn load_for_render(path: &Path, options: &SceneOptions) -> Result<Scene, String> {
     let scene = load_scene(path, &options.load_options()).map_err(|e| e.to_string())?;
     for warning in &scene.warnings {
         eprintln!("warning: {warning}");
-    }
-    for feature in &scene.unsupported {
-        eprintln!("warning: not rendered yet: {feature}");
     }
     Ok(scene)
 }

@@ -25,8 +25,6 @@ pub struct Scene {
     pub dialect: Dialect,
     /// Non-fatal problems found while reading (unknown fields, count mismatches...).
     pub warnings: Vec<Diagnostic>,
-    /// Features that the file uses but the renderer does not implement yet.
-    pub unsupported: Vec<String>,
     /// What reading the file cost (for `--stats`).
     pub load: LoadStats,
 }
@@ -55,7 +53,6 @@ impl Scene {
             root,
             dialect: Dialect::Canonical,
             warnings: Vec::new(),
-            unsupported: Vec::new(),
             load: LoadStats::default(),
         }
     }
@@ -298,14 +295,19 @@ pub struct Phong {
     pub exponent: f64,
 }
 
-/// A GGX specular coat with Schlick's Fresnel term from `f0`.
+/// A conductor lobe added on top of the weights, with its own colour: a
+/// GGX coat (`alpha`), or a mirror at `alpha` 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Coat {
     pub alpha: f64,
-    pub f0: Color,
+    /// Reflectance (constant Fresnel) or reflectance at normal incidence (Schlick).
+    pub color: Color,
+    pub fresnel: ConductorFresnel,
 }
 
-/// cav's angle-dependent weights: reflection `base + scale (1 - cos)^power`,
+/// cav's angle-dependent weights: reflection `base + scale (1 - cos)^power`
+/// from outside (inside a dielectric the term is scaled up so that it reaches
+/// `base + scale` at the critical angle; beyond it everything reflects),
 /// refraction `base + scale` minus that, diffuse the rest.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AngularWeights {

@@ -28,7 +28,7 @@ pub fn summary(scene: &Scene) -> String {
     } else {
         String::new()
     };
-    let mut text = format!(
+    let text = format!(
         "Dialect {}. Camera at ({}, {}, {}) looking along ({}, {}, {}), {fov}{lens}; \
          {}x{} pixels. {} materials, {objects} objects ({triangles} triangles), \
          {} textures, {} lights, {} warnings.",
@@ -46,12 +46,6 @@ pub fn summary(scene: &Scene) -> String {
         scene.lights.len(),
         scene.warnings.len(),
     );
-    if !scene.unsupported.is_empty() {
-        text.push_str(&format!(
-            " Not supported: {}.",
-            scene.unsupported.join("; ")
-        ));
-    }
     text
 }
 

@@ -65,23 +65,33 @@ pub fn build_camera(
             "defocusAngle" => defocus_angle = Some(cursor.number(context, key)?),
             "time0" | "time1" | "tStart" | "tEnd" | "start" | "end" => {
                 cursor.take_numbers();
+                context.not_rendered(
+                    item.location,
+                    key,
+                    "the shutter is open over the whole motion of moving spheres",
+                )?;
             }
             "mist" => {
                 cursor.take_numbers();
-                context.unsupported("mist (fog) in the camera is ignored");
+                context.not_rendered(item.location, key, "there is no fog")?;
             }
             "dispersion" => {
                 cursor.take_numbers();
-                context.unsupported("dispersion is ignored");
+                context.not_rendered(item.location, key, "one index for all wavelengths")?;
             }
             "lookat" => {
                 cursor.take_numbers();
+                context.not_rendered(
+                    item.location,
+                    key,
+                    "the direction decides (emj ignores it too)",
+                )?;
             }
             _ => context.skip_field(&mut cursor, key, item.location, name)?,
         }
     }
     if matches!(name, "OrthographicCamera" | "FisheyeCamera") {
-        context.unsupported("orthographic and fisheye cameras are rendered as perspective");
+        context.not_rendered(location, name, "rendered as a perspective camera")?;
     }
     if let (Some(from), Some(at)) = (look_from, look_at) {
         center = from;

@@ -29,9 +29,11 @@ pub fn build_lights(context: &mut Context, block: &Block) -> Result<Vec<Light>, 
         };
         match build_light(context, light)? {
             Some(l) => lights.push(l),
-            None if matches!(light.name.as_str(), "SpotLight") => {
-                context.unsupported("spot lights are ignored")
-            }
+            None if matches!(light.name.as_str(), "SpotLight") => context.not_rendered(
+                item.location,
+                "SpotLight",
+                "spot lights are not implemented",
+            )?,
             None => context.warn(
                 item.location,
                 format!("unknown light '{}', skipped", light.name),
@@ -85,6 +87,7 @@ fn build_light(context: &mut Context, block: &Block) -> Result<Option<Light>, Sc
             "y" | "v" | "edge_v" | "edge2" => edge_v = cursor.vec3(context, key)?,
             "falloff" => {
                 cursor.take_numbers();
+                context.not_rendered(item.location, key, "PA1 lights have no falloff")?;
             }
             _ => context.skip_field(&mut cursor, key, item.location, kind)?,
         }

@@ -5,7 +5,7 @@ use crate::scene::ast::{Block, ItemKind};
 use crate::scene::build::weights::{Fields, Kind, preset, resolve};
 use crate::scene::build::{Context, Cursor};
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{Dialect, Material};
+use crate::scene::model::{AngularWeights, Dialect, Material};
 
 /// A path written in the file, with where it was written.
 #[derive(Clone, Debug, PartialEq)]
@@ -84,9 +84,13 @@ fn build_material(
     let mut cursor = Cursor::of(block);
     while let Some(item) = cursor.next() {
         let Some(key) = item.word() else {
-            match item.block().map(|b| b.name.as_str()) {
-                Some("Fresnel") => context.unsupported("Fresnel material blocks are ignored"),
-                Some("translucency") => context.unsupported("translucency is ignored"),
+            match item.block() {
+                Some(fresnel) if fresnel.name == "Fresnel" => {
+                    f.angular = Some(read_fresnel(context, fresnel)?);
+                }
+                Some(other) if other.name == "translucency" => {
+                    context.not_rendered(item.location, "translucency", "no subsurface light")?
+                }
                 _ => context.skip_item(item, name)?,
             }
             continue;
@@ -94,6 +98,26 @@ fn build_material(
         read_field(context, &mut cursor, &mut f, key, item.location, name)?;
     }
     resolve(context, f, name, location)
+}
+
+/// cav's `Fresnel { fbase b fscale s power p }`.
+fn read_fresnel(context: &mut Context, block: &Block) -> Result<AngularWeights, SceneError> {
+    let mut weights = AngularWeights {
+        base: 0.0,
+        scale: 0.0,
+        power: 5.0,
+    };
+    let mut cursor = Cursor::of(block);
+    while let Some(item) = cursor.next() {
+        match item.word() {
+            Some(key @ "fbase") => weights.base = cursor.number(context, key)?,
+            Some(key @ "fscale") => weights.scale = cursor.number(context, key)?,
+            Some(key @ "power") => weights.power = cursor.number(context, key)?,
+            Some(key) => context.skip_field(&mut cursor, key, item.location, "Fresnel")?,
+            None => context.skip_item(item, "Fresnel")?,
+        }
+    }
+    Ok(weights)
 }
 
 fn read_field(
@@ -109,7 +133,10 @@ fn read_field(
         "diffuseColor" | "attenuation" | "albedo" => {
             f.diffuse_color = Some(color3(cursor, context, key)?)
         }
+        "transmittance" => f.transmittance = Some(color3(cursor, context, key)?),
         "specularColor" => f.specular_color = Some(color3(cursor, context, key)?),
+        "shininess" | "exponent" => f.shininess = Some((cursor.number(context, key)?, location)),
+        "reflectiveColor" => f.reflective_color = Some(color3(cursor, context, key)?),
         "emission" | "emissionColor" | "emissiveColor" | "Energy" | "luminance" | "lightColor" => {
             f.emission = Some(color3(cursor, context, key)?)
         }
@@ -131,7 +158,17 @@ fn read_field(
         "perDiffuse" => f.per[0] = Some(cursor.number(context, key)?),
         "perReflect" => f.per[1] = Some(cursor.number(context, key)?),
         "perRefract" => f.per[2] = Some(cursor.number(context, key)?),
-        "fuzz" | "fuzziness" | "roughness" => f.roughness = cursor.number(context, key)?,
+        "fuzz" | "fuzziness" => f.fuzz = Some(cursor.number(context, key)?),
+        "roughness" => f.roughness = Some(cursor.number(context, key)?),
+        "metallic" => f.metallic = Some((cursor.number(context, key)?, location)),
+        "glossy" => f.glossy = Some(cursor.number(context, key)? != 0.0),
+        "cookTorrence" => {
+            let alpha = cursor.number(context, key)?;
+            let f0 = cursor.number(context, key)?;
+            // rub's renderer ignores the third number.
+            cursor.take_numbers();
+            f.cook_torrance = Some((alpha, f0));
+        }
         "reflective" => f.reflective = Some(cursor.number(context, key)?),
         "transmissive" => {
             f.transmissive = Some(cursor.number(context, key)?);
@@ -152,8 +189,15 @@ fn read_field(
             }
             f.weights = Some([n[0], n[1], n[2]]);
             f.ior = Some(n[6]);
+            if n[3..6].iter().any(|&v| v != 0.0) {
+                context.not_rendered(
+                    location,
+                    "BRDF numbers 4 to 6",
+                    "their meaning is unknown",
+                )?;
+            }
         }
-        "texture" => read_texture(context, cursor, f)?,
+        "texture" => read_texture(context, cursor, f, location)?,
         "Texture" | "texture_file" | "diffuseMap" => {
             f.texture = Some(path_after(cursor, context, key)?)
         }
@@ -163,25 +207,40 @@ fn read_field(
         }
         "nTexture" => {
             cursor.word(context, key)?;
-            context.unsupported("rub normal-map descriptor files (nTexture) are ignored");
+            context.not_rendered(
+                location,
+                key,
+                "rub normal-map descriptor files are not read",
+            )?;
         }
         "specularMap" | "emissiveMap" | "opacityMap" => {
             cursor.word(context, key)?;
-            context.unsupported("specular, emissive and opacity maps are ignored");
+            context.not_rendered(location, key, "only colour, normal and bump maps are")?;
         }
         "cauchy" | "dispersion" => {
             cursor.take_numbers();
-            context.unsupported("dispersion (wavelength-dependent IOR) is ignored");
+            context.not_rendered(
+                location,
+                key,
+                "no dispersion (one index for all wavelengths)",
+            )?;
         }
-        "cookTorrence" => {
+        "textureScale" | "textureLuminance" | "Func" => {
             cursor.take_numbers();
-            context.unsupported("Cook-Torrance materials are rendered as their base lobes");
+            context.not_rendered(location, key, "this texture convention is not implemented")?;
         }
-        "shininess" | "exponent" | "metallic" | "glossy" | "enableReflect" | "enableRefract"
-        | "textureScale" | "textureLuminance" | "Func" | "opacity" | "transparency"
-        | "transparent" | "ambientColor" | "refractiveColor" | "transmittance"
-        | "reflectiveColor" | "transparentColor" => {
+        "enableReflect" | "enableRefract" => {
             cursor.take_numbers();
+            context.not_rendered(
+                location,
+                key,
+                "the lobe weights decide (rub's renderer does not read it either)",
+            )?;
+        }
+        "opacity" | "transparency" | "transparent" | "refractiveColor" | "transparentColor"
+        | "ambientColor" => {
+            cursor.take_numbers();
+            context.not_rendered(location, key, "no such lobe")?;
         }
         _ => context.skip_field(cursor, key, location, name)?,
     }
@@ -227,20 +286,28 @@ fn read_texture(
     context: &mut Context,
     cursor: &mut Cursor,
     f: &mut Fields,
+    location: Location,
 ) -> Result<(), SceneError> {
     if cursor.peek_number().is_some() {
         cursor.take_numbers();
-        context.unsupported("texture tables (integer texture references) are ignored");
-        return Ok(());
+        return context.not_rendered(location, "texture <index>", "texture tables are not read");
     }
     let path = path_after(cursor, context, "texture")?;
     if path.path.ends_with(".txt") {
-        context.unsupported("rub texture descriptor files are ignored");
+        context.not_rendered(
+            location,
+            "texture <file>.txt",
+            "rub texture descriptor files are not read",
+        )?;
     } else {
         f.texture = Some(path);
     }
     if !cursor.take_numbers().is_empty() {
-        context.unsupported("planar texture mappings (texture path + 8 numbers) are ignored");
+        context.not_rendered(
+            location,
+            "the numbers after 'texture'",
+            "planar texture mappings are not implemented",
+        )?;
     }
     Ok(())
 }

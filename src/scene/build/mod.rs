@@ -4,6 +4,7 @@ mod camera;
 mod cursor;
 mod dialect;
 mod lights;
+mod lobes;
 mod material;
 mod obj;
 mod objects;
@@ -30,7 +31,6 @@ pub struct Context<'a> {
     pub options: &'a LoadOptions,
     pub dialect: crate::scene::model::Dialect,
     pub warnings: Vec<Diagnostic>,
-    pub unsupported: Vec<String>,
 }
 
 impl Context<'_> {
@@ -55,11 +55,15 @@ impl Context<'_> {
         Ok(())
     }
 
-    /// Notes a feature the renderer does not implement (once per note).
-    pub fn unsupported(&mut self, note: &str) {
-        if !self.unsupported.iter().any(|n| n == note) {
-            self.unsupported.push(note.to_string());
-        }
+    /// Warns that `field`, read at `location`, is not rendered, and why
+    /// (`--strict` makes it an error): nothing a file says is dropped silently.
+    pub fn not_rendered(
+        &mut self,
+        location: Location,
+        field: &str,
+        why: &str,
+    ) -> Result<(), SceneError> {
+        self.warn(location, format!("'{field}' is not rendered: {why}"))
     }
 
     /// Skips an unknown key and the numbers after it, with a warning.
@@ -105,7 +109,6 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         options,
         dialect,
         warnings: Vec::new(),
-        unsupported: Vec::new(),
     };
     let mut camera_block = None;
     let mut background = Color::BLACK;
@@ -132,9 +135,17 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
             "Background" => background = build_background(&mut context, block)?,
             "Materials" => material_blocks.push(block),
             "Group" => group_blocks.push((block, item.location)),
-            "Textures" => context.unsupported("texture tables (Textures { ... }) are ignored"),
-            "Global" => context.unsupported("render settings in the scene (Global) are ignored"),
-            "Objects" => context.unsupported("object instance tables (Objects) are ignored"),
+            "Textures" => {
+                context.not_rendered(item.location, "Textures", "texture tables are not read")?
+            }
+            "Global" => context.not_rendered(
+                item.location,
+                "Global",
+                "render settings come from the command line",
+            )?,
+            "Objects" => {
+                context.not_rendered(item.location, "Objects", "instance tables are not read")?
+            }
             other => context.warn(
                 item.location,
                 format!("unknown top-level block '{other}', skipped"),
@@ -186,7 +197,6 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         root,
         dialect,
         warnings: context.warnings,
-        unsupported: context.unsupported,
         load,
     })
 }
@@ -200,8 +210,8 @@ fn build_background(context: &mut Context, block: &Block) -> Result<Color, Scene
                 let c = cursor.vec3(context, "color")?;
                 color = Color::new(c.x, c.y, c.z);
             }
-            Some("cubeMap") | Some("texture") => {
-                context.unsupported("background images and cube maps are ignored");
+            Some(key @ ("cubeMap" | "texture")) => {
+                context.not_rendered(item.location, key, "the background is one colour")?;
                 if matches!(cursor.peek().map(|i| &i.kind), Some(ItemKind::Word(_))) {
                     cursor.next();
                 }

@@ -122,7 +122,11 @@ impl ObjectBuilder {
                 Ok(None)
             }
             "MotionBlur" | "Fractal" | "Portal" | "SceneGroup" => {
-                context.unsupported("piu's MotionBlur/Fractal/Portal and SceneGroup are ignored");
+                context.not_rendered(
+                    location,
+                    &block.name,
+                    "piu's special objects are not implemented",
+                )?;
                 Ok(None)
             }
             other => {
@@ -149,7 +153,9 @@ impl ObjectBuilder {
                     file = Some((cursor.word(context, "obj_file")?, at));
                 }
                 Some("smooth") | Some("normalInterpolation") => smooth = true,
-                Some("disableDiffuseTexture") | Some("disableNormalTexture") => {}
+                Some(key @ ("disableDiffuseTexture" | "disableNormalTexture")) => {
+                    context.not_rendered(item.location, key, ".mtl textures are not read")?
+                }
                 Some(key) => context.skip_field(&mut cursor, key, item.location, &block.name)?,
                 None => context.skip_item(item, &block.name)?,
             }

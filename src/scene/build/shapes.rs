@@ -10,7 +10,8 @@ use crate::scene::model::Object;
 pub struct Fields<'a> {
     block: &'a Block,
     location: Location,
-    entries: Vec<(&'a str, Vec<f64>, Location)>,
+    /// (key, its numbers, where they end, where the key is).
+    entries: Vec<(&'a str, Vec<f64>, Location, Location)>,
 }
 
 impl<'a> Fields<'a> {
@@ -27,7 +28,7 @@ impl<'a> Fields<'a> {
             match item.word() {
                 Some(key) if known.contains(&key) => {
                     let numbers = cursor.take_numbers();
-                    entries.push((key, numbers, cursor.here()));
+                    entries.push((key, numbers, cursor.here(), item.location));
                 }
                 Some(key) => context.skip_field(&mut cursor, key, item.location, &block.name)?,
                 None => context.skip_item(item, &block.name)?,
@@ -41,12 +42,12 @@ impl<'a> Fields<'a> {
     }
 
     pub fn has(&self, key: &str) -> bool {
-        self.entries.iter().any(|(k, _, _)| *k == key)
+        self.entries.iter().any(|(k, ..)| *k == key)
     }
 
     /// The numbers of the last `key` field, at least `count` of them, all finite.
     fn numbers(&self, context: &Context, key: &str, count: usize) -> Result<&[f64], SceneError> {
-        let Some((_, numbers, after)) = self.entries.iter().rev().find(|(k, _, _)| *k == key)
+        let Some((_, numbers, after, _)) = self.entries.iter().rev().find(|(k, ..)| *k == key)
         else {
             return Err(context.error(self.location, format!("{} needs '{key}'", self.block.name)));
         };
@@ -82,6 +83,21 @@ impl<'a> Fields<'a> {
         } else {
             Ok(default)
         }
+    }
+
+    /// Warns about each of `keys` that the block has: read, not rendered.
+    fn not_rendered(
+        &self,
+        context: &mut Context,
+        keys: &[&str],
+        why: &str,
+    ) -> Result<(), SceneError> {
+        for (key, _, _, at) in &self.entries {
+            if keys.contains(key) {
+                context.not_rendered(*at, key, why)?;
+            }
+        }
+        Ok(())
     }
 
     fn nonzero(&self, context: &Context, key: &str) -> Result<Vec3, SceneError> {
@@ -121,6 +137,8 @@ pub fn build_shape(
         }
         "MovingSphere" | "MovingObj" => {
             let f = read(context, &["center0", "center1", "time0", "time1", "radius"])?;
+            let shutter = "the motion spans the whole shutter";
+            f.not_rendered(context, &["time0", "time1"], shutter)?;
             let start = f.vec3(context, "center0")?;
             Object::Sphere {
                 center: start,
@@ -134,6 +152,8 @@ pub fn build_shape(
                 context,
                 &["origCenter", "center", "radius", "tStart", "tEnd"],
             )?;
+            let shutter = "the motion spans the whole shutter";
+            f.not_rendered(context, &["tStart", "tEnd"], shutter)?;
             let start = f.vec3(context, "origCenter")?;
             Object::Sphere {
                 center: start,
@@ -144,6 +164,8 @@ pub fn build_shape(
         }
         "Plane" => {
             let f = read(context, &["normal", "offset", "scale"])?;
+            let tiling = "planes tile textures 10 times per unit";
+            f.not_rendered(context, &["scale"], tiling)?;
             Object::Plane {
                 normal: f.nonzero(context, "normal")?,
                 offset: f.number(context, "offset")?,

@@ -2,9 +2,10 @@
 
 use crate::color::Color;
 use crate::scene::build::Context;
+use crate::scene::build::lobes::add_lobes;
 use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{Dialect, Material};
+use crate::scene::model::{AngularWeights, Dialect, Material};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Kind {
@@ -65,7 +66,16 @@ pub struct Fields {
     pub kind: Option<Kind>,
     pub reflective: Option<f64>,
     pub transmissive: Option<f64>,
-    pub roughness: f64,
+    pub transmittance: Option<Color>,
+    /// With where it was written (for the warning when it is not rendered).
+    pub shininess: Option<(f64, Location)>,
+    pub reflective_color: Option<Color>,
+    pub fuzz: Option<f64>,
+    pub roughness: Option<f64>,
+    pub metallic: Option<(f64, Location)>,
+    pub glossy: Option<bool>,
+    pub cook_torrance: Option<(f64, f64)>,
+    pub angular: Option<AngularWeights>,
     pub texture: Option<PathRef>,
     pub normal_map: Option<PathRef>,
 }
@@ -88,7 +98,19 @@ pub fn resolve(
     location: Location,
 ) -> Result<MaterialSpec, SceneError> {
     let block_kind = Kind::from_block(name);
-    let color = f.color.or(f.diffuse_color).unwrap_or(Color::WHITE);
+    let bow_tinted = matches!(name, "ReflectiveMaterial" | "RefractiveMaterial");
+    let color = f
+        .color
+        .or(f.diffuse_color)
+        .or(f.transmittance.filter(|_| bow_tinted))
+        .unwrap_or(Color::WHITE);
+    if f.transmittance.is_some() && !bow_tinted {
+        context.not_rendered(
+            location,
+            "transmittance",
+            "only bow's reflective and refractive materials have it",
+        )?;
+    }
     let specular_is_emission =
         context.dialect == Dialect::Rtiow && matches!(name, "LightMaterial" | "Material");
     let mut emission = f.emission.or(if specular_is_emission {
@@ -148,17 +170,18 @@ pub fn resolve(
         }
         None => 1.5,
     };
+    let mut material = Material {
+        color,
+        emission,
+        diffuse: weights[0],
+        specular: weights[1],
+        refract: weights[2],
+        ior,
+        ..Material::DEFAULT
+    };
+    add_lobes(context, &f, name, specular_is_emission, &mut material)?;
     Ok(MaterialSpec {
-        material: Material {
-            color,
-            emission,
-            diffuse: weights[0],
-            specular: weights[1],
-            refract: weights[2],
-            ior,
-            roughness: f.roughness.max(0.0),
-            ..Material::DEFAULT
-        },
+        material,
         texture: f.texture,
         normal_map: f.normal_map,
     })
