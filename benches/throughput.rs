@@ -168,6 +168,7 @@ fn renders(c: &mut Criterion) {
                 progress: false,
                 clamp: None,
                 light_paths: true,
+                look: Default::default(),
             };
             let samples = settings.width as u64 * settings.height as u64 * settings.spp as u64;
             group.throughput(Throughput::Elements(samples));

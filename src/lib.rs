@@ -18,6 +18,7 @@ pub mod geometry;
 pub mod image_io;
 pub mod integrator;
 pub mod lights;
+pub mod look;
 pub mod math;
 pub mod metrics;
 pub mod plot;

@@ -12,6 +12,7 @@ use crate::camera::Camera;
 use crate::film::{Film, SplatSums};
 use crate::image_io::Image;
 use crate::integrator::{CameraSample, Integrator, SceneView, Splats};
+use crate::look::Look;
 use crate::sampler::{Sampler, SamplerKind};
 use crate::scene::model::{Object, Scene};
 use crate::subpixel::film_position;
@@ -38,6 +39,8 @@ pub struct RenderSettings {
     /// Whether the path integrator traces light subpaths for caustics where
     /// the scene has any (light tracing and connections).
     pub light_paths: bool,
+    /// The conventions of the rendering.
+    pub look: Look,
 }
 
 /// What a render did.
@@ -90,6 +93,7 @@ pub fn render_into(
     view.max_depth = settings.max_depth;
     view.camera = Some(camera.clone());
     view.light_paths &= settings.light_paths;
+    view.fresnel = settings.look.fresnel;
     // Light tracing's sums, only where light subpaths run.
     let splat_sums = SplatSums::new(if view.light_paths { width * height } else { 0 });
     let plan = SamplingPlan::for_scene(scene);

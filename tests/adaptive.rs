@@ -72,6 +72,7 @@ fn settings(spp: u32, threads: usize) -> RenderSettings {
         progress: false,
         clamp: None,
         light_paths: true,
+        look: Default::default(),
     }
 }
 

@@ -34,6 +34,7 @@ fn settings(integrator: Integrator, light_paths: bool, spp: u32, seed: u64) -> R
         progress: false,
         clamp: None,
         light_paths,
+        look: Default::default(),
     }
 }
 

@@ -50,6 +50,7 @@ fn every_shared_scene_renders_without_nan_or_inf_samples() {
                 progress: false,
                 clamp: None,
                 light_paths: true,
+                look: Default::default(),
             };
             let name = format!("{} ({})", file.display(), integrator.name());
             let (image, stats) = match render(&scene, &world, &settings) {

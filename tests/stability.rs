@@ -157,6 +157,7 @@ fn render_scene(scene: &Scene) -> (Image, u64) {
         progress: false,
         clamp: None,
         light_paths: true,
+        look: Default::default(),
     };
     let world = World::build(scene);
     let (image, stats) = render(scene, &world, &settings).expect("renders");

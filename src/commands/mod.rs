@@ -19,6 +19,7 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 
 use pathtracer::integrator::Integrator;
+use pathtracer::look::Look;
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Dialect, Scene};
@@ -83,6 +84,10 @@ pub struct SamplingOptions {
     /// expected image, noisier; for comparisons.
     #[arg(long)]
     pub no_light_paths: bool,
+    /// The conventions of the rendering: `original` (the ported renderer's,
+    /// the default) or `physical` (exact Fresnel equations).
+    #[arg(long, default_value = "original", value_parser = parse_look)]
+    pub look: Look,
     #[command(flatten)]
     pub scene: SceneOptions,
 }
@@ -101,8 +106,16 @@ impl SamplingOptions {
             progress,
             clamp: self.clamp,
             light_paths: !self.no_light_paths,
+            look: self.look,
         }
     }
+}
+
+fn parse_look(name: &str) -> Result<Look, String> {
+    Look::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Look::ALL.iter().map(|l| l.name).collect();
+        format!("unknown look '{name}' (one of: {})", names.join(", "))
+    })
 }
 
 fn parse_sampler(name: &str) -> Result<SamplerKind, String> {

@@ -82,7 +82,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         sidecar.push(".json");
         let sidecar = std::path::PathBuf::from(sidecar);
         let json = format!(
-            "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}, \"light_paths\": {}}}\n",
+            "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}, \"light_paths\": {}, \"look\": \"{}\"}}\n",
             args.scene.display().to_string(),
             settings.width,
             settings.height,
@@ -95,6 +95,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
             settings.max_depth,
             settings.clamp.map_or("null".to_string(), |c| c.to_string()),
             settings.light_paths,
+            settings.look.name,
         );
         write_atomically(&sidecar, json.as_bytes())?;
     }
