@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench converge crosscheck mitsuba-converge clean
+.PHONY: build render test lint bench converge crosscheck crosscheck-glossy mitsuba-converge clean
 
 build:
 	$(CARGO) build --release
@@ -36,6 +36,15 @@ crosscheck: build
 	python3 -m venv $(VENV)
 	$(VENV)/bin/pip install -q mitsuba numpy
 	$(VENV)/bin/python scripts/crosscheck.py --variant $(VARIANT)
+
+# The microfacet lobes against Mitsuba's roughconductor and roughdielectric
+# (GGX, same alpha), with the exact Fresnel equations of the physical look.
+crosscheck-glossy: build
+	python3 -m venv $(VENV)
+	$(VENV)/bin/pip install -q mitsuba numpy
+	$(VENV)/bin/python scripts/crosscheck.py --variant $(VARIANT) --look physical \
+		--scene testcases/crosscheck_glossy.txt --spp 256 --reference-spp 4096 \
+		--tolerance 0.01 --out output/crosscheck_glossy
 
 # Mitsuba's error-against-time curve (same CSV as `make converge`), into
 # output/curves/<scene>/ (venv from `make crosscheck`):

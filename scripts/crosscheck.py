@@ -197,10 +197,11 @@ CAMERA_FIELDS = {"center": 3, "direction": 3, "up": 3, "width": 1, "height": 1, 
                  "canvasDistance": 1, "focusDistance": 1, "interfereRatio": 1}
 MATERIAL_FIELDS = {"color": 3, "diffuseColor": 3, "emission": 3, "diffusionRate": 1,
                    "specularRate": 1, "refractRate": 1, "refractiveIndex": 1, "texture": "word",
-                   "specularColor": 3, "shininess": 1,
+                   "specularColor": 3, "shininess": 1, "roughness": 1,
                    # Cambrian (cam) dialect: `type DIFF|SPEC|REFR`, IOR `refractive_rate`
                    "type": "word", "refractive_rate": 1, "texture_file": "word"}
 CAMBRIAN_TYPES = {"DIFF": (1.0, 0.0, 0.0), "SPEC": (0.0, 1.0, 0.0), "REFR": (0.0, 0.0, 1.0)}
+MIN_ROUGHNESS = 1e-3  # as src/scene/model.rs: below it, mirror and smooth glass
 
 
 def resolve_path(relative, scene_path):
@@ -327,10 +328,13 @@ class Scene:
                 except SystemExit as error:
                     warn(f"{error}: texture ignored")
                     texture = None
+            if "specularColor" in f and max(f["specularColor"]) > 0:
+                warn("specularColor/shininess (our Phong lobe) are not translated")
             self.materials.append({
                 "color": color, "emission": f.get("emission", [0.0, 0.0, 0.0]),
                 "diffuse": diffuse, "specular": specular, "refract": refract,
-                "ior": ior, "texture": texture})
+                "ior": ior, "texture": texture,
+                "roughness": f.get("roughness", [0.0])[0]})
 
     def add(self, kind, matrix, **fields):
         if not 0 <= self.current_material < len(self.materials):
@@ -432,14 +436,21 @@ def mitsuba_bsdf(material, texture=None):
     lobes = []
     if material["diffuse"] > 0:
         lobes.append((material["diffuse"], {"type": "diffuse", "reflectance": spec}))
+    # GGX of the same alpha, sampled by visible normals, Smith's separable
+    # masking: our rough conductor and rough dielectric (src/bsdf).
+    alpha = float(material.get("roughness", 0.0))
+    rough = {"distribution": "ggx", "alpha": alpha, "sample_visible": True}
     if material["specular"] > 0:
-        lobes.append((material["specular"], {"type": "conductor", "material": "none",
-                                             "specular_reflectance": spec}))
+        conductor = {"type": "conductor", "material": "none", "specular_reflectance": spec}
+        if alpha >= MIN_ROUGHNESS:
+            conductor = dict(conductor, type="roughconductor", **rough)
+        lobes.append((material["specular"], conductor))
     if material["refract"] > 0:
-        lobes.append((material["refract"], {"type": "dielectric",
-                                            "int_ior": float(material["ior"]), "ext_ior": 1.0,
-                                            "specular_reflectance": spec,
-                                            "specular_transmittance": spec}))
+        dielectric = {"type": "dielectric", "int_ior": float(material["ior"]), "ext_ior": 1.0,
+                      "specular_reflectance": spec, "specular_transmittance": spec}
+        if alpha >= MIN_ROUGHNESS:
+            dielectric = dict(dielectric, type="roughdielectric", **rough)
+        lobes.append((material["refract"], dielectric))
     if (texture is None and max(color) <= 0) or not lobes:  # ours stops on a black colour
         return {"type": "diffuse", "reflectance": rgb([0, 0, 0])}
     weight, bsdf = lobes[0]
@@ -580,9 +591,9 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
             "sampler": {"type": "independent", "sample_count": spp},
         },
     }
-    if any(m["refract"] > 0 for m in scene.materials):
+    if any(m["refract"] > 0 for m in scene.materials) and getattr(args, "look", "") != "physical":
         warn("glass: Mitsuba's dielectric uses the exact Fresnel equations, ours Schlick's "
-             "approximation (and smallpt's roulette): glass differs slightly")
+             "approximation in the original look (use --look physical): glass differs")
     planes = [(np.array(s["normal"], float), s["offset"]) for s in scene.shapes
               if s["kind"] == "plane" and np.allclose(s["matrix"], np.eye(4))]
     for s in scene.shapes:
@@ -791,7 +802,7 @@ def render_ours(args, out_path):
         subprocess.run(["cargo", "build", "--release"], cwd=ROOT, check=True)
     command = [binary, "render", args.scene, "-o", out_path, "--spp", str(args.spp),
                "--seed", str(args.seed), "--width", str(args.width), "--height",
-               str(args.height), "--quiet"]
+               str(args.height), "--look", args.look, "--quiet"]
     t0 = time.perf_counter()
     result = subprocess.run(command, capture_output=True, text=True)
     elapsed = time.perf_counter() - t0
@@ -825,6 +836,8 @@ def main():
     parser.add_argument("--out", default="output/crosscheck")
     parser.add_argument("--mitsuba-only", action="store_true", help="skip our renderer")
     parser.add_argument("--dialect", default="auto", choices=["auto", "canonical", "cambrian"])
+    parser.add_argument("--look", default="original", choices=["original", "physical"],
+                        help="our look: physical for the exact Fresnel equations of glass")
     parser.add_argument("--flat-textures", action="store_true",
                         help="give textured materials their mean texel instead of the map")
     parser.add_argument("--tolerance", type=float, default=0.03,

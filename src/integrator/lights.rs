@@ -67,3 +67,53 @@ pub fn direct(world: &World, lights: &[Light], at: &Shading, bsdf: &Bsdf, wo: &V
     }
     sum
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bsdf::lambert::Lambert;
+    use crate::bsdf::phong::Phong;
+    use crate::bsdf::{Bsdf, Lobe};
+    use crate::math::Point3;
+    use crate::scene::model::Material;
+
+    /// The PA1 framework's term for a Lambert surface, and the energy-
+    /// normalised Phong highlight on top, from a directional light.
+    #[test]
+    fn point_and_directional_lights_reflect_by_the_bsdf() {
+        let world = World::from_primitives(Vec::new());
+        let material = Material::default();
+        let normal = Vec3::z();
+        let at = Shading {
+            point: Point3::zeros(),
+            material: &material,
+            color: Color::WHITE,
+            geometric: normal,
+            normal,
+            entering: true,
+        };
+        let to_light = Vec3::new(0.6, 0.0, 0.8);
+        let light = Light::Directional {
+            direction: -to_light,
+            color: Color::gray(2.0),
+        };
+        let wo = Vec3::new(-0.6, 0.0, 0.8);
+        let (kd, ks, n) = (0.5, 0.3, 20.0);
+        let mut bsdf = Bsdf::new(&normal);
+        bsdf.push(Lobe::Lambert(Lambert { albedo: Color::gray(kd) }), 1.0);
+        let diffuse_only = direct(&world, &[light.clone()], &at, &bsdf, &wo);
+        // albedo * color * cos, the framework's term.
+        assert!((diffuse_only.r - kd * 2.0 * 0.8).abs() < 1e-12);
+        bsdf.push(
+            Lobe::Phong(Phong {
+                color: Color::gray(ks),
+                exponent: n,
+            }),
+            1.0,
+        );
+        let with_highlight = direct(&world, &[light], &at, &bsdf, &wo);
+        // wo is the mirror of the light direction: cos(alpha) = 1.
+        let highlight = ks * (n + 2.0) / 2.0 * 0.8 * 2.0;
+        assert!((with_highlight.r - diffuse_only.r - highlight).abs() < 1e-9);
+    }
+}
