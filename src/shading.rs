@@ -66,10 +66,12 @@ impl<'a> Shading<'a> {
 }
 
 /// Tangent-space normal mapping: texel (r, g, b) in [0, 1] is the normal
-/// (2r - 1, 2g - 1, 2b - 1) in the frame (tangent, bitangent, normal).
+/// (2r - 1, 2g - 1, 2b - 1) in the frame (tangent, bitangent, normal), the
+/// tangent along `dpdu`.
 fn perturb(hit: &WorldHit, texel: Color) -> Vec3 {
     let n = hit.shading_normal;
-    let t = (hit.tangent - n * n.dot(&hit.tangent)).try_normalize(1e-12);
+    // dpdu is not normalised: the tolerance is relative to its length.
+    let t = (hit.dpdu - n * n.dot(&hit.dpdu)).try_normalize(1e-12 * hit.dpdu.norm());
     let Some(t) = t else { return n };
     let b = n.cross(&t);
     let local = Vec3::new(

@@ -239,7 +239,8 @@ fn non_uniformly_scaled_sphere_is_an_ellipsoid() {
         );
         let gradient = Vec3::new(q.x / 4.0, q.y, q.z).normalize();
         assert!((hit.geometric_normal - gradient).norm() < 1e-9);
-        assert!(hit.tangent.dot(&hit.geometric_normal).abs() < 1e-9);
+        assert!(hit.dpdu.dot(&hit.geometric_normal).abs() < 1e-9 * hit.dpdu.norm());
+        assert!(hit.dpdv.dot(&hit.geometric_normal).abs() < 1e-9 * hit.dpdv.norm());
     }
     assert!(hits > 500);
 }
@@ -251,7 +252,8 @@ fn assert_finite_hit(world: &World, ray: &Ray, what: &str) {
             hit.point,
             hit.geometric_normal,
             hit.shading_normal,
-            hit.tangent,
+            hit.dpdu,
+            hit.dpdv,
         ];
         assert!(
             values.iter().all(|v| v.is_finite())

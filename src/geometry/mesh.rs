@@ -129,13 +129,19 @@ impl Mesh {
                 b0 * t0[0] + b1 * t1[0] + b2 * t2[0],
                 b0 * t0[1] + b1 * t1[1] + b2 * t2[1],
             ];
-            // dp/du from the uv parametrisation (pbrt's triangle tangent).
+            // p - p0 = dpdu (u - u0) + dpdv (v - v0) on the triangle: solve the
+            // 2x2 system of its two edges. Collinear uvs keep the barycentric
+            // derivatives (finite, in the plane).
             let (du1, dv1) = (t1[0] - t0[0], t1[1] - t0[1]);
             let (du2, dv2) = (t2[0] - t0[0], t2[1] - t0[1]);
             let determinant = du1 * dv2 - dv1 * du2;
-            if determinant.abs() > 1e-300 {
-                let dpdu = ((p[b] - p[a]) * dv2 - (p[c] - p[a]) * dv1) / determinant;
-                surface.tangent = normalize_or(dpdu, surface.tangent);
+            let (edge1, edge2) = (p[b] - p[a], p[c] - p[a]);
+            let dpdu = (edge1 * dv2 - edge2 * dv1) / determinant;
+            let dpdv = (edge2 * du1 - edge1 * du2) / determinant;
+            let finite = |v: &Vec3| v.iter().all(|c| c.is_finite());
+            if determinant != 0.0 && finite(&dpdu) && finite(&dpdv) {
+                surface.dpdu = dpdu;
+                surface.dpdv = dpdv;
             }
         }
         if smooth && let Some(normals) = self.data.normals.as_ref().filter(|n| n.len() == p.len()) {
@@ -169,8 +175,9 @@ mod tests {
         assert!((smooth.shading_normal - expected).norm() < 1e-12);
         assert_eq!(smooth.geometric_normal, Vec3::z());
         assert!((smooth.uv[0] - 1.0).abs() < 1e-12 && (smooth.uv[1] - 1.0).abs() < 1e-12);
-        // du runs along x in this parametrisation.
-        assert!((smooth.tangent - Vec3::x()).norm() < 1e-12);
+        // u = 2x and v = 4y in this parametrisation.
+        assert!((smooth.dpdu - Vec3::x() / 2.0).norm() < 1e-12);
+        assert!((smooth.dpdv - Vec3::y() / 4.0).norm() < 1e-12);
     }
 
     #[test]

@@ -34,8 +34,10 @@ pub struct WorldHit {
     pub geometric_normal: Vec3,
     /// Unit interpolated normal (meshes with normals), else the geometric one.
     pub shading_normal: Vec3,
-    /// Unit tangent along increasing u (for normal maps).
-    pub tangent: Vec3,
+    /// Partial derivatives of `point` with respect to `uv` (not normalised;
+    /// per texel for [`UvMapping::Tiled`]), for normal and bump maps.
+    pub dpdu: Vec3,
+    pub dpdv: Vec3,
     pub uv: [f64; 2],
     pub uv_mapping: UvMapping,
     pub material: usize,
@@ -79,7 +81,8 @@ pub struct World {
     bvh: Bvh,
     /// Bounds of the bounded primitives.
     bounds: Aabb,
-    /// Per material: whether a texture or normal map reads uv and tangents.
+    /// Per material: whether a texture, normal or bump map reads uv and the
+    /// surface derivatives.
     /// Empty: compute them always.
     needs_uv: Vec<bool>,
 }
@@ -187,7 +190,8 @@ impl World {
             point: surface.point,
             geometric_normal: surface.geometric_normal,
             shading_normal: surface.shading_normal,
-            tangent: surface.tangent,
+            dpdu: surface.dpdu,
+            dpdv: surface.dpdv,
             uv: surface.uv,
             uv_mapping: surface.uv_mapping,
             material: primitive.material,

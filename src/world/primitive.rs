@@ -35,7 +35,7 @@ impl Primitive {
     }
 
     /// The world-space surface of a hit found by [`Primitive::intersect`]
-    /// (uv and tangent only `with_uv`, see [`Shape::surface`]).
+    /// (uv and surface derivatives only `with_uv`, see [`Shape::surface`]).
     pub fn surface(&self, ray: &Ray, hit: &Intersection, with_uv: bool) -> SurfaceHit {
         match &self.transform {
             None => self.shape.surface(ray, hit, with_uv),
