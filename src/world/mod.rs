@@ -101,7 +101,7 @@ impl World {
         world.needs_uv = scene
             .materials
             .iter()
-            .map(|m| m.texture.is_some() || m.normal_map.is_some())
+            .map(|m| m.texture.is_some() || m.normal_map.is_some() || m.bump.is_some())
             .collect();
         world
     }

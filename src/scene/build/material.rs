@@ -19,6 +19,8 @@ pub struct PathRef {
 pub struct MaterialSpec {
     pub material: Material,
     pub texture: Option<PathRef>,
+    /// A surface map: a normal map or a height map, which the loader
+    /// decides from the key (recorded in the build context) and the image.
     pub normal_map: Option<PathRef>,
 }
 
@@ -158,8 +160,18 @@ fn read_field(
             f.texture = Some(path_after(cursor, context, key)?)
         }
         "bump" | "normal_file" | "bumpMap" | "normal" => {
-            f.normal_map = Some(path_after(cursor, context, key)?);
-            cursor.take_numbers();
+            // The image decides between height and normal map at load, the
+            // key only says which is assumed (see `textures`); a number after
+            // the path is the height scale.
+            use crate::scene::build::textures::{MapName, SurfaceMapHint};
+            let path = path_after(cursor, context, key)?;
+            let named = match key {
+                "bump" | "bumpMap" => MapName::Bump,
+                _ => MapName::Normal,
+            };
+            let scale = cursor.take_numbers().first().copied().unwrap_or(1.0);
+            context.note_surface_map(path.location, SurfaceMapHint { named, scale });
+            f.normal_map = Some(path);
         }
         "nTexture" => {
             cursor.word(context, key)?;

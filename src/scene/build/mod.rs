@@ -31,6 +31,9 @@ pub struct Context<'a> {
     pub dialect: crate::scene::model::Dialect,
     pub warnings: Vec<Diagnostic>,
     pub unsupported: Vec<String>,
+    /// What the material reader saw around each surface-map path, by where
+    /// the path is written (see `textures`).
+    surface_map_hints: Vec<(Location, textures::SurfaceMapHint)>,
 }
 
 impl Context<'_> {
@@ -53,6 +56,20 @@ impl Context<'_> {
         }
         self.warnings.push(self.diagnostic(location, message));
         Ok(())
+    }
+
+    /// Records the key and scale of the surface-map path written at `location`.
+    pub fn note_surface_map(&mut self, location: Location, hint: textures::SurfaceMapHint) {
+        self.surface_map_hints.push((location, hint));
+    }
+
+    /// The key and scale recorded for the surface-map path at `location`.
+    pub fn surface_map_hint(&self, location: Location) -> Option<textures::SurfaceMapHint> {
+        self.surface_map_hints
+            .iter()
+            .rev()
+            .find(|(at, _)| *at == location)
+            .map(|(_, hint)| *hint)
     }
 
     /// Notes a feature the renderer does not implement (once per note).
@@ -106,6 +123,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         dialect,
         warnings: Vec::new(),
         unsupported: Vec::new(),
+        surface_map_hints: Vec::new(),
     };
     let mut camera_block = None;
     let mut background = Color::BLACK;
@@ -169,6 +187,10 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         _ => Object::Group(roots),
     };
     let texture_start = std::time::Instant::now();
+    let specs = specs
+        .into_iter()
+        .map(|spec| textures::MaterialImages::from_spec(spec, &context))
+        .collect();
     let (materials, textures) = textures::load_textures(&mut context, specs, &root)?;
     let load = crate::scene::model::LoadStats {
         mesh_seconds: objects.mesh_seconds,
