@@ -407,7 +407,9 @@ pub enum Object {
     },
     Mesh {
         mesh: Arc<MeshData>,
-        /// Interpolate the OBJ's vertex normals (when it has them).
+        /// Shade with interpolated normals even when the OBJ has no `vn`
+        /// (area-weighted vertex normals are computed then); the file's own
+        /// `vn` are interpolated either way.
         smooth: bool,
         material: usize,
     },

@@ -89,13 +89,14 @@ pub struct World {
 
 impl World {
     /// Flattens the object tree: nested transforms are composed (identities are
-    /// dropped), each distinct mesh (`Arc` identity) gets one triangle BVH shared by
-    /// its instances, and a top-level BVH is built over the bounded primitives
-    /// (unless they are few).
+    /// dropped), each distinct mesh (`Arc` identity) gets one triangle BVH (and,
+    /// when some instance is `smooth` and the file has no normals, one set of
+    /// area-weighted vertex normals) shared by its instances, and a top-level
+    /// BVH is built over the bounded primitives (unless they are few).
     /// Degenerate shapes (zero radius, zero normal, zero area, unusable profiles)
     /// are dropped.
     pub fn build(scene: &Scene) -> World {
-        let mut builder = Builder::default();
+        let mut builder = Builder::for_tree(&scene.root);
         builder.visit(&scene.root, None);
         let mut world = World::from_primitives(builder.primitives);
         world.needs_uv = scene

@@ -132,7 +132,11 @@ impl ObjectBuilder {
         }
     }
 
-    /// `TriangleMesh { [smooth] obj_file path }`.
+    /// `TriangleMesh { [smooth] obj_file path }`. Shading normals: the OBJ's
+    /// `vn` are always interpolated when it has them; `smooth` (or
+    /// `normalInterpolation`) asks for interpolated normals also when it has
+    /// none, which are then area-weighted vertex normals computed once per
+    /// file (see `geometry::mesh`). Without either, triangles are flat.
     fn mesh(
         &mut self,
         context: &mut Context,
