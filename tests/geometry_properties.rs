@@ -72,12 +72,14 @@ fn world_bvh_equals_linear_scan() {
             shape,
             transform: None,
             material: i,
+            face_materials: None,
         });
     }
     primitives.push(Primitive {
         shape: Shape::Plane(Plane::new(Vec3::y(), -1.0).unwrap()),
         transform: None,
         material: 999,
+        face_materials: None,
     });
     let world = World::from_primitives(primitives.clone());
     let bounds = world.bounds();
@@ -153,6 +155,7 @@ fn spawn_test_primitives() -> Vec<(String, Primitive)> {
                     shape: shape.clone(),
                     transform: transform(*matrix),
                     material: 0,
+                    face_materials: None,
                 },
             ));
         }
@@ -218,6 +221,7 @@ fn non_uniformly_scaled_sphere_is_an_ellipsoid() {
         shape: Shape::Sphere(Sphere::new(Point3::zeros(), 1.0, Vec3::zeros())),
         transform: transform(matrix),
         material: 0,
+        face_materials: None,
     }]);
     let mut rng = Rng::new(5, 5);
     let mut hits = 0;
@@ -283,6 +287,7 @@ fn axis_parallel_and_grazing_rays_give_no_nan() {
             shape: shape.clone(),
             transform: None,
             material: 0,
+            face_materials: None,
         }]);
         let what = format!("{shape:?}").chars().take(40).collect::<String>();
         // Axis-parallel rays from a grid that includes the axis, the box faces and

@@ -154,6 +154,7 @@ fn moving_along_a_derivative_moves_uv_by_one_coordinate() {
                 shape: shape.clone(),
                 transform: transform(matrix),
                 material: 0,
+                face_materials: None,
             };
             let world = World::from_primitives(vec![primitive.clone()]);
             let target = target_box(&world, &primitive);
@@ -221,6 +222,7 @@ fn derivatives_are_finite_at_singular_points() {
             shape,
             transform: None,
             material: 0,
+            face_materials: None,
         }]);
         let hit = world.intersect(&ray, 0.0, f64::INFINITY).expect("hit");
         for d in [hit.dpdu, hit.dpdv] {

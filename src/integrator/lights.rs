@@ -13,7 +13,7 @@ use crate::world::World;
 pub fn direct_lights(scene: &Scene) -> &[Light] {
     let mut has_emitter = false;
     scene.root.for_each_leaf(&mut |leaf| {
-        if let Some(m) = leaf.material().and_then(|i| scene.materials.get(i)) {
+        for m in leaf.materials().filter_map(|i| scene.materials.get(i)) {
             has_emitter |= !m.emission.is_black();
         }
     });

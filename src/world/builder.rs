@@ -98,6 +98,10 @@ impl Builder {
             }
         };
         let material = object.material().unwrap_or(0);
+        let face_materials = match object {
+            Object::Mesh { face_materials, .. } => face_materials.clone(),
+            _ => None,
+        };
         if let Some(shape) = shape {
             let transform = transform
                 .filter(|t| !t.is_identity())
@@ -106,6 +110,7 @@ impl Builder {
                 shape,
                 transform,
                 material,
+                face_materials,
             });
         }
     }

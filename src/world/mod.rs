@@ -40,6 +40,8 @@ pub struct WorldHit {
     pub dpdv: Vec3,
     pub uv: [f64; 2],
     pub uv_mapping: UvMapping,
+    /// The material of the primitive, or of the triangle for meshes with
+    /// `.mtl` materials ([`Primitive::material_of`]).
     pub material: usize,
     /// Index of the primitive in the world (see [`World::primitive`]).
     pub primitive: usize,
@@ -179,11 +181,8 @@ impl World {
         }
         let (index, hit) = best?;
         let primitive = &self.primitives[index];
-        let with_uv = self
-            .needs_uv
-            .get(primitive.material)
-            .copied()
-            .unwrap_or(true);
+        let material = primitive.material_of(hit.index);
+        let with_uv = self.needs_uv.get(material).copied().unwrap_or(true);
         let surface = primitive.surface(ray, &hit, with_uv);
         debug_assert!(surface.point.iter().all(|c| c.is_finite()));
         Some(WorldHit {
@@ -195,7 +194,7 @@ impl World {
             dpdv: surface.dpdv,
             uv: surface.uv,
             uv_mapping: surface.uv_mapping,
-            material: primitive.material,
+            material,
             primitive: index,
             element: hit.index,
         })
@@ -265,6 +264,7 @@ mod tests {
             mesh: Arc::clone(&data),
             smooth: false,
             material,
+            face_materials: None,
         };
         let root = Object::Group(vec![
             translate(
@@ -340,6 +340,7 @@ mod tests {
                 shape,
                 transform,
                 material: i,
+                face_materials: None,
             });
         }
         for axis in 0..3 {
@@ -350,6 +351,7 @@ mod tests {
                 shape: Shape::Plane(plane),
                 transform: None,
                 material: 100 + axis,
+                face_materials: None,
             });
         }
         primitives

@@ -5,6 +5,8 @@ mod cursor;
 mod dialect;
 mod lights;
 mod material;
+mod meshes;
+mod mtl;
 mod obj;
 mod objects;
 mod paths;
@@ -178,8 +180,15 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
     for (block, location) in group_blocks {
         roots.push(objects.group(&mut context, block, location)?);
     }
+    // Scene materials, then the .mtl materials that meshes use, then the
+    // materials of the emitting disks and parallelograms of lights.
+    let mut specs: Vec<textures::MaterialImages> = specs
+        .into_iter()
+        .map(|spec| textures::MaterialImages::from_spec(spec, &context))
+        .collect();
+    specs.extend(objects.take_materials());
     for (material, object) in lights::emitting_geometry(&lights, specs.len()) {
-        specs.push(material::MaterialSpec::new(material));
+        specs.push(textures::MaterialImages::plain(material));
         roots.push(object);
     }
     let root = match roots.len() {
@@ -187,13 +196,9 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         _ => Object::Group(roots),
     };
     let texture_start = std::time::Instant::now();
-    let specs = specs
-        .into_iter()
-        .map(|spec| textures::MaterialImages::from_spec(spec, &context))
-        .collect();
     let (materials, textures) = textures::load_textures(&mut context, specs, &root)?;
     let load = crate::scene::model::LoadStats {
-        mesh_seconds: objects.mesh_seconds,
+        mesh_seconds: objects.mesh_seconds(),
         meshes_loaded: objects.meshes_loaded(),
         texture_seconds: texture_start.elapsed().as_secs_f64(),
         textures_loaded: textures.len(),

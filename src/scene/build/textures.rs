@@ -51,14 +51,15 @@ pub struct SurfaceMapRef {
 pub struct MaterialImages {
     pub material: Material,
     pub texture: Option<PathRef>,
-    pub surface_map: Option<SurfaceMapRef>,
+    /// Normal and height maps (a `.mtl` may name one of each).
+    pub surface_maps: Vec<SurfaceMapRef>,
 }
 
 impl MaterialImages {
     /// A scene material: its surface map is read with the hint the material
     /// reader left for it (a normal map of scale 1 without one).
     pub fn from_spec(spec: MaterialSpec, context: &Context) -> MaterialImages {
-        let surface_map = spec.normal_map.map(|path| {
+        let surface_maps = spec.normal_map.map(|path| {
             let hint = context
                 .surface_map_hint(path.location)
                 .unwrap_or(SurfaceMapHint {
@@ -74,7 +75,16 @@ impl MaterialImages {
         MaterialImages {
             material: spec.material,
             texture: spec.texture,
-            surface_map,
+            surface_maps: surface_maps.into_iter().collect(),
+        }
+    }
+
+    /// A material that names no images.
+    pub fn plain(material: Material) -> MaterialImages {
+        MaterialImages {
+            material,
+            texture: None,
+            surface_maps: Vec::new(),
         }
     }
 }
@@ -87,9 +97,7 @@ pub fn load_textures(
 ) -> Result<(Vec<Material>, Vec<Arc<Texture>>), SceneError> {
     let mut used = BTreeSet::new();
     root.for_each_leaf(&mut |leaf| {
-        if let Some(m) = leaf.material() {
-            used.insert(m);
-        }
+        used.extend(leaf.materials());
     });
     let mut textures = Vec::new();
     let mut cache: HashMap<PathBuf, usize> = HashMap::new();
@@ -100,15 +108,27 @@ pub fn load_textures(
             if let Some(path) = &spec.texture {
                 material.texture = Some(load(context, path, &mut cache, &mut textures)?);
             }
-            if let Some(map) = &spec.surface_map {
+            for map in &spec.surface_maps {
                 let texture = load(context, &map.path, &mut cache, &mut textures)?;
-                if is_height_map(&textures[texture], map.named) {
-                    material.bump = Some(Bump {
-                        texture,
-                        scale: map.scale,
-                    });
+                let replaced = if is_height_map(&textures[texture], map.named) {
+                    material
+                        .bump
+                        .replace(Bump {
+                            texture,
+                            scale: map.scale,
+                        })
+                        .is_some()
                 } else {
-                    material.normal_map = Some(texture);
+                    material.normal_map.replace(texture).is_some()
+                };
+                if replaced {
+                    context.warn(
+                        map.path.location,
+                        format!(
+                            "'{}' replaces another map of the same kind (height or normal)",
+                            map.path.path
+                        ),
+                    )?;
                 }
             }
         }
