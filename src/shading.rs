@@ -65,6 +65,7 @@ impl<'a> Shading<'a> {
     /// The origin of a ray leaving this point in `direction`: pushed off the
     /// surface along the geometric normal, to the side the ray goes to (see
     /// [`offset_origin`]), so that it cannot re-hit the surface.
+    #[inline]
     pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
         offset_origin(&self.point, &self.geometric, direction)
     }

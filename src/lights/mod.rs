@@ -134,6 +134,7 @@ impl Emitters {
 
     /// Picks an emitter with `select` and a point on it with `u`, as seen from
     /// `reference` at shutter time `time`.
+    #[inline]
     pub fn sample(
         &self,
         reference: &Point3,
