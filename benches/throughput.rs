@@ -102,6 +102,7 @@ fn dragon(c: &mut Criterion) {
         mesh,
         smooth: false,
         material: 0,
+        face_materials: None,
     });
     let mut group = c.benchmark_group("bvh_build");
     group.sample_size(10);

@@ -29,6 +29,7 @@ pub mod sampling;
 pub mod scene;
 pub mod shading;
 pub mod subpixel;
+pub mod surface_maps;
 pub mod texture;
 pub mod trig;
 pub mod world;

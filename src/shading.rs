@@ -1,11 +1,13 @@
 //! What a surface hit means for light transport: the material, its colour
-//! (texture or constant), and normals oriented towards the incoming ray.
+//! (texture or constant), and normals (interpolated, normal- and bump-mapped,
+//! see `surface_maps`) oriented towards the incoming ray.
 
 use crate::bsdf::{Bsdf, Rules, from_material};
 use crate::color::Color;
 use crate::math::{Point3, Ray, Vec3, offset_origin};
 use crate::scene::model::{Material, Scene};
-use crate::world::{UvMapping, WorldHit};
+use crate::surface_maps;
+use crate::world::WorldHit;
 
 /// A hit seen from the ray that found it.
 pub struct Shading<'a> {
@@ -34,18 +36,21 @@ impl<'a> Shading<'a> {
         } else {
             -hit.geometric_normal
         };
+        // Interpolated normal, then the normal map, then the bump map.
         let mut normal = match material.normal_map.and_then(|i| scene.textures.get(i)) {
-            Some(map) => perturb(hit, map.lookup(hit.uv[0], hit.uv[1])),
+            Some(map) => surface_maps::normal_mapped(hit, hit.shading_normal, map),
             None => hit.shading_normal,
         };
+        if let Some(bump) = material.bump
+            && let Some(map) = scene.textures.get(bump.texture)
+        {
+            normal = surface_maps::bumped(hit, normal, map, bump.scale);
+        }
         if normal.dot(&geometric) < 0.0 {
             normal = -normal;
         }
         let color = match material.texture.and_then(|i| scene.textures.get(i)) {
-            Some(texture) => match hit.uv_mapping {
-                UvMapping::Unit => texture.lookup(hit.uv[0], hit.uv[1]),
-                UvMapping::Tiled => texture.lookup_tiled(hit.uv[0], hit.uv[1]),
-            },
+            Some(texture) => surface_maps::texel_at(texture, hit),
             None => material.color,
         };
         Shading {
@@ -78,24 +83,8 @@ impl<'a> Shading<'a> {
     /// The origin of a ray leaving this point in `direction`: pushed off the
     /// surface along the geometric normal, to the side the ray goes to (see
     /// [`offset_origin`]), so that it cannot re-hit the surface.
+    #[inline]
     pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
         offset_origin(&self.point, &self.geometric, direction)
     }
-}
-
-/// Tangent-space normal mapping: texel (r, g, b) in [0, 1] is the normal
-/// (2r - 1, 2g - 1, 2b - 1) in the frame (tangent, bitangent, normal).
-fn perturb(hit: &WorldHit, texel: Color) -> Vec3 {
-    let n = hit.shading_normal;
-    let t = (hit.tangent - n * n.dot(&hit.tangent)).try_normalize(1e-12);
-    let Some(t) = t else { return n };
-    let b = n.cross(&t);
-    let local = Vec3::new(
-        2.0 * texel.r - 1.0,
-        2.0 * texel.g - 1.0,
-        2.0 * texel.b - 1.0,
-    );
-    (t * local.x + b * local.y + n * local.z)
-        .try_normalize(1e-12)
-        .unwrap_or(n)
 }

@@ -20,6 +20,14 @@ impl Texture {
         self.texel(i, j)
     }
 
+    /// [`Texture::lookup`] with wrap-around instead of clamping (u = 1 is
+    /// u = 0 again), for height maps read one texel to either side.
+    pub fn lookup_wrapped(&self, u: f64, v: f64) -> Color {
+        let i = wrap_index(u * self.width as f64, self.width);
+        let j = wrap_index((1.0 - v) * self.height as f64, self.height);
+        self.texel(i, j)
+    }
+
     /// Nearest texel with wrap-around, for tiled textures (coordinates in texels).
     pub fn lookup_tiled(&self, x: f64, y: f64) -> Color {
         let i = wrap_index(x, self.width);
@@ -70,6 +78,15 @@ mod tests {
         assert_eq!(t.lookup(0.9, 0.1), Color::new(1., 1., 1.));
         assert_eq!(t.lookup(-5.0, 7.0), Color::new(1., 0., 0.));
         assert_eq!(t.lookup(f64::NAN, 0.5), t.lookup(0.0, 0.5));
+    }
+
+    #[test]
+    fn wrapped_lookup_agrees_inside_and_wraps_outside() {
+        let t = checker();
+        for (u, v) in [(0.1, 0.9), (0.9, 0.1), (0.6, 0.3)] {
+            assert_eq!(t.lookup_wrapped(u, v), t.lookup(u, v));
+            assert_eq!(t.lookup_wrapped(u + 1.0, v - 3.0), t.lookup(u, v));
+        }
     }
 
     #[test]

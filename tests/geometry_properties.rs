@@ -72,12 +72,14 @@ fn world_bvh_equals_linear_scan() {
             shape,
             transform: None,
             material: i,
+            face_materials: None,
         });
     }
     primitives.push(Primitive {
         shape: Shape::Plane(Plane::new(Vec3::y(), -1.0).unwrap()),
         transform: None,
         material: 999,
+        face_materials: None,
     });
     let world = World::from_primitives(primitives.clone());
     let bounds = world.bounds();
@@ -153,6 +155,7 @@ fn spawn_test_primitives() -> Vec<(String, Primitive)> {
                     shape: shape.clone(),
                     transform: transform(*matrix),
                     material: 0,
+                    face_materials: None,
                 },
             ));
         }
@@ -218,6 +221,7 @@ fn non_uniformly_scaled_sphere_is_an_ellipsoid() {
         shape: Shape::Sphere(Sphere::new(Point3::zeros(), 1.0, Vec3::zeros())),
         transform: transform(matrix),
         material: 0,
+        face_materials: None,
     }]);
     let mut rng = Rng::new(5, 5);
     let mut hits = 0;
@@ -239,7 +243,8 @@ fn non_uniformly_scaled_sphere_is_an_ellipsoid() {
         );
         let gradient = Vec3::new(q.x / 4.0, q.y, q.z).normalize();
         assert!((hit.geometric_normal - gradient).norm() < 1e-9);
-        assert!(hit.tangent.dot(&hit.geometric_normal).abs() < 1e-9);
+        assert!(hit.dpdu.dot(&hit.geometric_normal).abs() < 1e-9 * hit.dpdu.norm());
+        assert!(hit.dpdv.dot(&hit.geometric_normal).abs() < 1e-9 * hit.dpdv.norm());
     }
     assert!(hits > 500);
 }
@@ -251,7 +256,8 @@ fn assert_finite_hit(world: &World, ray: &Ray, what: &str) {
             hit.point,
             hit.geometric_normal,
             hit.shading_normal,
-            hit.tangent,
+            hit.dpdu,
+            hit.dpdv,
         ];
         assert!(
             values.iter().all(|v| v.is_finite())
@@ -281,6 +287,7 @@ fn axis_parallel_and_grazing_rays_give_no_nan() {
             shape: shape.clone(),
             transform: None,
             material: 0,
+            face_materials: None,
         }]);
         let what = format!("{shape:?}").chars().take(40).collect::<String>();
         // Axis-parallel rays from a grid that includes the axis, the box faces and

@@ -235,6 +235,7 @@ fn emissive_mesh() -> Scene {
             mesh: quad_mesh(),
             smooth: false,
             material: 3,
+            face_materials: None,
         },
     ));
     objects.push(transform(
@@ -243,6 +244,7 @@ fn emissive_mesh() -> Scene {
             mesh: quad_mesh(),
             smooth: false,
             material: 0,
+            face_materials: None,
         },
     ));
     common::scene_with(materials, Object::Group(objects))

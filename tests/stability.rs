@@ -116,6 +116,7 @@ fn objects(scale: f64, offset: Vec3) -> Object {
                 mesh: octahedron(),
                 smooth: false,
                 material: 0,
+                face_materials: None,
             }),
         },
         Object::Transform {
@@ -216,6 +217,7 @@ fn the_full_dragon_with_degenerate_triangles_gives_finite_hits() {
         mesh,
         smooth: false,
         material: 0,
+        face_materials: None,
     };
     let scene = common::scene_with(materials(), root);
     let world = World::build(&scene);

@@ -2,7 +2,7 @@
 
 use std::f64::consts::PI;
 
-use super::{Intersection, SurfaceHit};
+use super::{Intersection, SurfaceHit, derivatives_or_fallback};
 use crate::math::{Aabb, Point3, Ray, Vec3, orthonormal_basis};
 use crate::world::UvMapping;
 
@@ -47,18 +47,25 @@ impl Disk {
         (x * x + y * y <= self.radius * self.radius).then(|| Intersection::new(t, x, y))
     }
 
-    /// uv = (angle / 2pi, r / radius); the tangent follows the angle.
+    /// uv = (angle / 2pi, r / radius): `dpdu` runs along the circle
+    /// (2pi r long), `dpdv` outwards (radius long); at the centre, where the
+    /// angle has no derivative, they are a fallback pair.
     pub fn surface(&self, _ray: &Ray, hit: &Intersection) -> SurfaceHit {
         let (e1, e2) = self.frame;
         let (x, y) = (hit.u, hit.v);
         let angle = y.atan2(x).rem_euclid(2.0 * PI);
-        let tangent = e2 * angle.cos() - e1 * angle.sin();
+        let r = (x * x + y * y).sqrt();
+        let (sin, cos) = angle.sin_cos();
+        let dpdu = (e2 * cos - e1 * sin) * (2.0 * PI * r);
+        let dpdv = (e1 * cos + e2 * sin) * self.radius;
+        let (dpdu, dpdv) = derivatives_or_fallback(dpdu, dpdv, &self.normal);
         SurfaceHit {
             point: self.center + e1 * x + e2 * y,
             geometric_normal: self.normal,
             shading_normal: self.normal,
-            tangent,
-            uv: [angle / (2.0 * PI), (x * x + y * y).sqrt() / self.radius],
+            dpdu,
+            dpdv,
+            uv: [angle / (2.0 * PI), r / self.radius],
             uv_mapping: UvMapping::Unit,
         }
     }

@@ -1,5 +1,11 @@
-//! Triangle meshes with their own BVH; smooth normals and uvs when the file has them.
+//! Triangle meshes with their own BVH; uvs when the file has them.
 //! One `Mesh` is built per distinct `MeshData` and shared by all its instances.
+//!
+//! Shading normals: the file's vertex normals (`vn`) are always interpolated
+//! when it has them; a file without them is flat-shaded unless an instance
+//! asks for `smooth`, which interpolates area-weighted vertex normals (the sum
+//! of the unnormalised face normals around each vertex), computed once per
+//! mesh ([`Mesh::with_smooth_normals`]).
 
 use std::sync::Arc;
 
@@ -20,6 +26,9 @@ pub struct Mesh {
     packed: Vec<PackedTriangle>,
     /// Index in `data.triangles` of each packed triangle.
     original: Vec<u32>,
+    /// Area-weighted vertex normals, for `smooth` instances of a file
+    /// without `vn` (see the module docs).
+    computed_normals: Option<Vec<Vec3>>,
 }
 
 /// A triangle as its intersection test reads it.
@@ -64,7 +73,34 @@ impl Mesh {
             bvh,
             packed,
             original,
+            computed_normals: None,
         }
+    }
+
+    /// [`Mesh::new`], and area-weighted vertex normals when the data has no
+    /// normals of its own (for its `smooth` instances).
+    pub fn with_smooth_normals(data: Arc<MeshData>) -> Mesh {
+        let mut mesh = Mesh::new(data);
+        if mesh.file_normals().is_none() {
+            mesh.computed_normals = Some(area_weighted_normals(
+                &mesh.data.positions,
+                &mesh.data.triangles,
+            ));
+        }
+        mesh
+    }
+
+    /// The area-weighted vertex normals, when they were computed.
+    pub fn computed_normals(&self) -> Option<&[Vec3]> {
+        self.computed_normals.as_deref()
+    }
+
+    /// The file's vertex normals, when there is one per vertex.
+    fn file_normals(&self) -> Option<&[Vec3]> {
+        self.data
+            .normals
+            .as_deref()
+            .filter(|n| n.len() == self.data.positions.len())
     }
 
     pub fn triangle_count(&self) -> usize {
@@ -116,7 +152,8 @@ impl Mesh {
         })
     }
 
-    /// The surface at a hit; `smooth` interpolates the vertex normals when present.
+    /// The surface at a hit: the file's vertex normals are interpolated when it
+    /// has them, else the computed ones when `smooth` (see the module docs).
     pub fn surface(&self, _ray: &Ray, hit: &Intersection, smooth: bool) -> SurfaceHit {
         let [a, b, c] = self.data.triangles[hit.index as usize].map(|i| i as usize);
         let p = &self.data.positions;
@@ -129,16 +166,27 @@ impl Mesh {
                 b0 * t0[0] + b1 * t1[0] + b2 * t2[0],
                 b0 * t0[1] + b1 * t1[1] + b2 * t2[1],
             ];
-            // dp/du from the uv parametrisation (pbrt's triangle tangent).
+            // p - p0 = dpdu (u - u0) + dpdv (v - v0) on the triangle: solve the
+            // 2x2 system of its two edges. Collinear uvs keep the barycentric
+            // derivatives (finite, in the plane).
             let (du1, dv1) = (t1[0] - t0[0], t1[1] - t0[1]);
             let (du2, dv2) = (t2[0] - t0[0], t2[1] - t0[1]);
             let determinant = du1 * dv2 - dv1 * du2;
-            if determinant.abs() > 1e-300 {
-                let dpdu = ((p[b] - p[a]) * dv2 - (p[c] - p[a]) * dv1) / determinant;
-                surface.tangent = normalize_or(dpdu, surface.tangent);
+            let (edge1, edge2) = (p[b] - p[a], p[c] - p[a]);
+            let dpdu = (edge1 * dv2 - edge2 * dv1) / determinant;
+            let dpdv = (edge2 * du1 - edge1 * du2) / determinant;
+            let finite = |v: &Vec3| v.iter().all(|c| c.is_finite());
+            if determinant != 0.0 && finite(&dpdu) && finite(&dpdv) {
+                surface.dpdu = dpdu;
+                surface.dpdv = dpdv;
             }
         }
-        if smooth && let Some(normals) = self.data.normals.as_ref().filter(|n| n.len() == p.len()) {
+        let normals = match self.file_normals() {
+            Some(normals) => Some(normals),
+            None if smooth => self.computed_normals(),
+            None => None,
+        };
+        if let Some(normals) = normals {
             let n = normals[a] * b0 + normals[b] * b1 + normals[c] * b2;
             surface.shading_normal = normalize_or(n, surface.geometric_normal);
         }
@@ -146,12 +194,36 @@ impl Mesh {
     }
 }
 
+/// Per vertex, the normalised sum of the cross products `(p1 - p0) x (p2 - p0)`
+/// of the triangles around it (each face weighted by its area); zero for a
+/// vertex of no triangle with area. Triangles with out-of-range indices or
+/// zero area are skipped.
+pub fn area_weighted_normals(positions: &[Point3], triangles: &[[u32; 3]]) -> Vec<Vec3> {
+    let mut sums = vec![Vec3::zeros(); positions.len()];
+    for triangle in triangles {
+        let vertex = |k: usize| positions.get(triangle[k] as usize);
+        let (Some(a), Some(b), Some(c)) = (vertex(0), vertex(1), vertex(2)) else {
+            continue;
+        };
+        let face = (b - a).cross(&(c - a));
+        if !(face.norm_squared() > 0.0 && face.iter().all(|x| x.is_finite())) {
+            continue;
+        }
+        for &i in triangle {
+            sums[i as usize] += face;
+        }
+    }
+    sums.into_iter()
+        .map(|sum| normalize_or(sum, Vec3::zeros()))
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn smooth_normals_and_uvs_are_interpolated() {
+    fn file_normals_and_uvs_are_interpolated_smooth_or_not() {
         let data = MeshData {
             positions: vec![Point3::zeros(), Point3::x(), Point3::y()],
             normals: Some(vec![Vec3::z(), Vec3::new(1.0, 0.0, 1.0), Vec3::z()]),
@@ -162,15 +234,50 @@ mod tests {
         let ray = Ray::new(Point3::new(0.5, 0.25, 1.0), -Vec3::z(), 0.0);
         let hit = mesh.intersect(&ray, 0.0, f64::INFINITY).unwrap();
         let smooth = mesh.surface(&ray, &hit, true);
-        let flat = mesh.surface(&ray, &hit, false);
-        assert_eq!(flat.shading_normal, Vec3::z());
+        let plain = mesh.surface(&ray, &hit, false);
         let expected =
             (Vec3::z() * 0.25 + Vec3::new(1.0, 0.0, 1.0) * 0.5 + Vec3::z() * 0.25).normalize();
         assert!((smooth.shading_normal - expected).norm() < 1e-12);
+        assert_eq!(plain.shading_normal, smooth.shading_normal);
         assert_eq!(smooth.geometric_normal, Vec3::z());
         assert!((smooth.uv[0] - 1.0).abs() < 1e-12 && (smooth.uv[1] - 1.0).abs() < 1e-12);
-        // du runs along x in this parametrisation.
-        assert!((smooth.tangent - Vec3::x()).norm() < 1e-12);
+        // u = 2x and v = 4y in this parametrisation.
+        assert!((smooth.dpdu - Vec3::x() / 2.0).norm() < 1e-12);
+        assert!((smooth.dpdv - Vec3::y() / 4.0).norm() < 1e-12);
+        // The file's normals win: nothing is computed.
+        assert!(
+            Mesh::with_smooth_normals(Arc::clone(&mesh.data))
+                .computed_normals()
+                .is_none()
+        );
+    }
+
+    #[test]
+    fn computed_normals_only_for_smooth_instances() {
+        // A folded pair of triangles: the shared edge's vertices average both faces.
+        let data = MeshData {
+            positions: vec![
+                Point3::zeros(),
+                Point3::x(),
+                Point3::new(0.0, 1.0, 0.0),
+                Point3::new(0.0, -1.0, 1.0),
+            ],
+            normals: None,
+            uvs: None,
+            triangles: vec![[0, 1, 2], [1, 0, 3], [0, 0, 1]],
+        };
+        let mesh = Mesh::with_smooth_normals(Arc::new(data));
+        let normals = mesh.computed_normals().expect("computed");
+        assert!((normals[2] - Vec3::z()).norm() < 1e-12);
+        // Face normals z (area 1/2) and (0, 1, 1) (area sqrt(2)/2), unnormalised.
+        assert!((normals[3] - Vec3::new(0.0, 1.0, 1.0).normalize()).norm() < 1e-12);
+        let shared = Vec3::new(0.0, 1.0, 2.0).normalize();
+        assert!((normals[0] - shared).norm() < 1e-12);
+        assert!((normals[1] - shared).norm() < 1e-12);
+        let ray = Ray::new(Point3::new(0.2, 0.2, 1.0), -Vec3::z(), 0.0);
+        let hit = mesh.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+        assert_eq!(mesh.surface(&ray, &hit, false).shading_normal, Vec3::z());
+        assert_ne!(mesh.surface(&ray, &hit, true).shading_normal, Vec3::z());
     }
 
     #[test]

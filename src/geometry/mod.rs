@@ -1,6 +1,7 @@
 //! Shapes and their ray intersection: a cheap `intersect` that finds the distance
-//! and surface parameters, then `surface` that computes the local frame of the one
-//! hit that survives.
+//! and surface parameters, then `surface` that computes the local geometry of the
+//! one hit that survives (point, normals, uv and the derivatives of the point
+//! with respect to uv).
 
 pub mod curve;
 pub mod disk;
@@ -53,15 +54,41 @@ pub struct SurfaceHit {
     pub geometric_normal: Vec3,
     /// Unit shading normal (interpolated for smooth meshes).
     pub shading_normal: Vec3,
-    /// Unit tangent along increasing u.
-    pub tangent: Vec3,
+    /// Partial derivatives of `point` with respect to `uv[0]` and `uv[1]`
+    /// (not normalised; per texel where `uv` is in texels). Both are
+    /// perpendicular to the geometric normal; where the parametrisation is
+    /// singular (a sphere's poles, a disk's centre) they are finite fallbacks.
+    pub dpdu: Vec3,
+    pub dpdv: Vec3,
     pub uv: [f64; 2],
     pub uv_mapping: UvMapping,
 }
 
-/// A unit vector perpendicular to `normal`, used when a shape has no natural tangent.
-pub(crate) fn fallback_tangent(normal: &Vec3) -> Vec3 {
-    crate::math::orthonormal_basis(normal).0
+/// Two unit vectors perpendicular to `normal` (and to each other), used as
+/// surface derivatives where a shape's parametrisation has none.
+pub(crate) fn fallback_derivatives(normal: &Vec3) -> (Vec3, Vec3) {
+    crate::math::orthonormal_basis(normal)
+}
+
+/// `(dpdu, dpdv)`, with a zero or non-finite one replaced by a unit vector
+/// perpendicular to `normal` (and to the other one, so that `dpdu x dpdv`
+/// still points along `normal`).
+pub(crate) fn derivatives_or_fallback(dpdu: Vec3, dpdv: Vec3, normal: &Vec3) -> (Vec3, Vec3) {
+    let usable = |v: &Vec3| {
+        let length = v.norm_squared();
+        length > 0.0 && length.is_finite()
+    };
+    let (e1, e2) = match (usable(&dpdu), usable(&dpdv)) {
+        (true, true) => return (dpdu, dpdv),
+        (true, false) => (dpdu, normalize_or(normal.cross(&dpdu), Vec3::zeros())),
+        (false, true) => (normalize_or(dpdv.cross(normal), Vec3::zeros()), dpdv),
+        (false, false) => fallback_derivatives(normal),
+    };
+    if usable(&e1) && usable(&e2) {
+        (e1, e2)
+    } else {
+        fallback_derivatives(normal)
+    }
 }
 
 /// `v` normalised, or `fallback` when `v` is zero or not finite.

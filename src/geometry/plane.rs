@@ -51,7 +51,9 @@ impl Plane {
             point,
             geometric_normal: self.normal,
             shading_normal: self.normal,
-            tangent: e1,
+            // uv = PLANE_TILING * (p . e1, p . e2): per texel, p moves 1/PLANE_TILING.
+            dpdu: e1 * (1.0 / PLANE_TILING),
+            dpdv: e2 * (1.0 / PLANE_TILING),
             uv: [PLANE_TILING * point.dot(&e1), PLANE_TILING * point.dot(&e2)],
             uv_mapping: UvMapping::Tiled,
         }

@@ -1,6 +1,6 @@
 //! Parallelograms `origin + s * edge_u + t * edge_v`, s and t in [0, 1].
 
-use super::{Intersection, SurfaceHit, fallback_tangent, normalize_or};
+use super::{Intersection, SurfaceHit};
 use crate::math::{Aabb, Point3, Ray, Vec3};
 use crate::world::UvMapping;
 
@@ -60,7 +60,8 @@ impl Rectangle {
             point: self.origin + self.edge_u * hit.u + self.edge_v * hit.v,
             geometric_normal: self.normal,
             shading_normal: self.normal,
-            tangent: normalize_or(self.edge_u, fallback_tangent(&self.normal)),
+            dpdu: self.edge_u,
+            dpdv: self.edge_v,
             uv: [hit.u, hit.v],
             uv_mapping: UvMapping::Unit,
         }

@@ -13,7 +13,7 @@ use std::f64::consts::PI;
 
 use super::curve::Curve;
 use super::profile_seeds::{RadialRay, SeedTessellation};
-use super::{Intersection, SurfaceHit, fallback_tangent, normalize_or};
+use super::{Intersection, SurfaceHit, derivatives_or_fallback, normalize_or};
 use crate::math::{Aabb, Point3, Ray, Vec3, inverse_direction};
 use crate::scene::model::Profile;
 use crate::world::UvMapping;
@@ -164,7 +164,9 @@ impl Revolution {
         ((p.y - hit.y).abs() <= tolerance && (p.x.abs() - r).abs() <= tolerance).then_some((t, u))
     }
 
-    /// Point, normal `dS/du x dS/dtheta` (normalised), tangent `dS/du`, uv = (theta/2pi, u).
+    /// Point, normal `dS/du x dS/dtheta` (normalised), uv = (theta/2pi, u):
+    /// `dpdu = 2pi dS/dtheta` (along the circle), `dpdv = dS/du` (along the
+    /// profile).
     pub fn surface(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
         let u = hit.u;
         let (p, mut dp) = self.curve.evaluate(u);
@@ -187,15 +189,15 @@ impl Revolution {
         let m = Vec3::new(-dp.y * cos, dp.x, dp.y * sin) * (sign * self.orientation);
         let radial = Vec3::new(cos, 0.0, -sin);
         let normal = normalize_or(m, radial * (sign * self.orientation));
-        let tangent = normalize_or(
-            Vec3::new(dp.x * cos, dp.y, -dp.x * sin),
-            fallback_tangent(&normal),
-        );
+        let dpdu = Vec3::new(-p.x * sin, 0.0, -p.x * cos) * (2.0 * PI);
+        let dpdv = Vec3::new(dp.x * cos, dp.y, -dp.x * sin);
+        let (dpdu, dpdv) = derivatives_or_fallback(dpdu, dpdv, &normal);
         SurfaceHit {
             point,
             geometric_normal: normal,
             shading_normal: normal,
-            tangent,
+            dpdu,
+            dpdv,
             uv: [theta / (2.0 * PI), u],
             uv_mapping: UvMapping::Unit,
         }
@@ -317,7 +319,9 @@ mod tests {
             if expected.norm() > 1e-9 {
                 let error = (expected.normalize() - s.geometric_normal).norm();
                 assert!(error < 1e-5, "normal off by {error} at u={u}");
-                assert!((du.normalize() - s.tangent).norm() < 1e-5);
+                assert!((du / (2.0 * h) - s.dpdv).norm() < 1e-5 * du.norm() / h);
+                let along = dtheta / (2.0 * h) * (2.0 * PI);
+                assert!((along - s.dpdu).norm() < 1e-5 * along.norm().max(1.0));
             }
         }
         assert!(hits > 500, "{hits}");

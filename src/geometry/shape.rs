@@ -44,7 +44,7 @@ impl Shape {
     }
 
     /// The surface at a hit. `with_uv: false` lets a shape skip texture
-    /// coordinates and tangents that nothing will read (a sphere's uv costs an
+    /// coordinates and derivatives that nothing will read (a sphere's uv costs an
     /// atan2 and an asin); they are then zero.
     pub fn surface(&self, ray: &Ray, hit: &Intersection, with_uv: bool) -> SurfaceHit {
         match self {

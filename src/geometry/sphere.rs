@@ -2,7 +2,9 @@
 
 use std::f64::consts::PI;
 
-use super::{Intersection, SurfaceHit, fallback_tangent, normalize_or};
+use super::{
+    Intersection, SurfaceHit, derivatives_or_fallback, fallback_derivatives, normalize_or,
+};
 use crate::math::{Aabb, Point3, Ray, Vec3};
 use crate::world::UvMapping;
 
@@ -68,27 +70,36 @@ impl Sphere {
         let point = center + w * self.radius;
         let u = 0.5 - w.z.atan2(w.x) / (2.0 * PI);
         let v = 0.5 + w.y.clamp(-1.0, 1.0).asin() / PI;
-        // d point / du is proportional to (-w.z, 0, w.x) up to the sign of du/dphi.
-        let tangent = normalize_or(Vec3::new(w.z, 0.0, -w.x), fallback_tangent(&w));
+        // w = (cos lat cos phi, sin lat, cos lat sin phi) with phi = 2pi (1/2 - u)
+        // and lat = pi (v - 1/2): dp/du = -2pi r dw/dphi, dp/dv = pi r dw/dlat.
+        let cos_latitude = (w.x * w.x + w.z * w.z).sqrt();
+        let dpdu = Vec3::new(w.z, 0.0, -w.x) * (2.0 * PI * self.radius);
+        let dpdv = Vec3::new(-w.y * w.x, cos_latitude * cos_latitude, -w.y * w.z)
+            * (PI * self.radius / cos_latitude);
+        let (dpdu, dpdv) = derivatives_or_fallback(dpdu, dpdv, &w);
         SurfaceHit {
             point,
             geometric_normal: w,
             shading_normal: w,
-            tangent,
+            dpdu,
+            dpdv,
             uv: [u, v],
             uv_mapping: UvMapping::Unit,
         }
     }
 
-    /// [`Sphere::surface`] without uv and tangent (left zero and along x).
+    /// [`Sphere::surface`] without uv and derivatives (uv left zero, the
+    /// derivatives an orthonormal pair around the normal).
     pub fn surface_without_uv(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
         let center = self.center_at(ray.time);
         let w = normalize_or(ray.at(hit.t) - center, Vec3::y());
+        let (dpdu, dpdv) = fallback_derivatives(&w);
         SurfaceHit {
             point: center + w * self.radius,
             geometric_normal: w,
             shading_normal: w,
-            tangent: fallback_tangent(&w),
+            dpdu,
+            dpdv,
             uv: [0.0, 0.0],
             uv_mapping: UvMapping::Unit,
         }

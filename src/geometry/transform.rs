@@ -1,7 +1,7 @@
 //! Affine transforms attached to primitives: rays go to object space with an
 //! unnormalised direction (so `t` is shared by both spaces, also under non-uniform
-//! scale); points and tangents come back with the matrix, normals with the inverse
-//! transpose.
+//! scale); points and surface derivatives come back with the matrix (uv are
+//! the same in both spaces), normals with the inverse transpose.
 
 use nalgebra::Matrix3;
 
@@ -55,15 +55,17 @@ impl Transform {
         );
         let shading_normal =
             super::normalize_or(self.normal_matrix * hit.shading_normal, geometric_normal);
-        let tangent = super::normalize_or(
-            transform_vector(&self.matrix, &hit.tangent),
-            super::fallback_tangent(&shading_normal),
+        let (dpdu, dpdv) = super::derivatives_or_fallback(
+            transform_vector(&self.matrix, &hit.dpdu),
+            transform_vector(&self.matrix, &hit.dpdv),
+            &geometric_normal,
         );
         SurfaceHit {
             point: transform_point(&self.matrix, &hit.point),
             geometric_normal,
             shading_normal,
-            tangent,
+            dpdu,
+            dpdv,
             uv: hit.uv,
             uv_mapping: hit.uv_mapping,
         }

@@ -1,6 +1,6 @@
 //! Single triangles: Möller–Trumbore in f64; zero-area triangles are never hit.
 
-use super::{Intersection, SurfaceHit, fallback_tangent, normalize_or};
+use super::{Intersection, SurfaceHit, derivatives_or_fallback, normalize_or};
 use crate::math::{Aabb, Point3, Ray, Vec3};
 use crate::world::UvMapping;
 
@@ -51,17 +51,20 @@ pub fn intersect_edges(
     (t > t_min && t < t_max).then_some((t, b1, b2))
 }
 
-/// The surface of a triangle at barycentrics (b1, b2), uv = (b1, b2).
+/// The surface of a triangle at barycentrics (b1, b2), uv = (b1, b2), so
+/// that `dpdu = p1 - p0` and `dpdv = p2 - p0`.
 pub fn surface_vertices(p0: &Point3, p1: &Point3, p2: &Point3, b1: f64, b2: f64) -> SurfaceHit {
     let edge1 = p1 - p0;
     let edge2 = p2 - p0;
     let normal = normalize_or(edge1.cross(&edge2), Vec3::z());
     let point = p0 * (1.0 - b1 - b2) + p1 * b1 + p2 * b2;
+    let (dpdu, dpdv) = derivatives_or_fallback(edge1, edge2, &normal);
     SurfaceHit {
         point,
         geometric_normal: normal,
         shading_normal: normal,
-        tangent: normalize_or(edge1, fallback_tangent(&normal)),
+        dpdu,
+        dpdv,
         uv: [b1, b2],
         uv_mapping: UvMapping::Unit,
     }

@@ -20,7 +20,7 @@ use crate::world::World;
 pub fn direct_lights(scene: &Scene) -> &[Light] {
     let mut has_emitter = false;
     scene.root.for_each_leaf(&mut |leaf| {
-        if let Some(m) = leaf.material().and_then(|i| scene.materials.get(i)) {
+        for m in leaf.materials().filter_map(|i| scene.materials.get(i)) {
             has_emitter |= !m.emission.is_black();
         }
     });
@@ -100,8 +100,13 @@ mod tests {
         let wo = Vec3::new(-0.6, 0.0, 0.8);
         let (kd, ks, n) = (0.5, 0.3, 20.0);
         let mut bsdf = Bsdf::new(&normal);
-        bsdf.push(Lobe::Lambert(Lambert { albedo: Color::gray(kd) }), 1.0);
-        let diffuse_only = direct(&world, &[light.clone()], &at, &bsdf, &wo);
+        bsdf.push(
+            Lobe::Lambert(Lambert {
+                albedo: Color::gray(kd),
+            }),
+            1.0,
+        );
+        let diffuse_only = direct(&world, std::slice::from_ref(&light), &at, &bsdf, &wo);
         // albedo * color * cos, the framework's term.
         assert!((diffuse_only.r - kd * 2.0 * 0.8).abs() < 1e-12);
         bsdf.push(

@@ -80,6 +80,7 @@ impl Cuts {
     /// The smallest cap of the sphere that holds every point reachable from
     /// `reference`, when one of the cuts gives a cap below
     /// [`MAX_CAP_FRACTION`] of the sphere.
+    #[inline]
     pub fn cap(&self, center: &Point3, radius: f64, reference: &Point3) -> Option<Cap> {
         let mut best: Option<Cap> = None;
         for plane in self.planes.iter().flatten() {

@@ -1,6 +1,7 @@
 //! The emitter table of next-event estimation: every emissive primitive whose
-//! shape can be sampled, one entry per shape (per triangle for meshes), chosen
-//! in proportion to its power (emission luminance x area).
+//! shape can be sampled, one entry per shape (per triangle for meshes, with
+//! the emission of the triangle's own material when the mesh has `.mtl`
+//! materials), chosen in proportion to its power (emission luminance x area).
 //!
 //! Sampled: spheres (under similarity transforms only; a non-uniformly scaled
 //! sphere is an ellipsoid and is left to BSDF sampling), triangles,
@@ -84,19 +85,26 @@ impl Emitters {
         let mut entries = Vec::new();
         let mut first_entry = vec![NONE; world.primitives().len()];
         let planes: Vec<CutPlane> = world.primitives().iter().filter_map(world_plane).collect();
+        let emission = |material: usize| {
+            scene
+                .materials
+                .get(material)
+                .map_or(Color::BLACK, |m| m.emission)
+        };
         for (index, primitive) in world.primitives().iter().enumerate() {
-            let Some(material) = scene.materials.get(primitive.material) else {
-                continue;
-            };
-            if material.emission.is_black() {
+            if primitive.materials().all(|m| emission(m).is_black()) {
                 continue;
             }
+            // Shapes come one per element (a mesh's triangle k is the k-th),
+            // each with the emission of its own material.
             let start = entries.len();
+            let mut element = 0u32;
             push_shapes(primitive, &planes, &mut |shape| {
                 entries.push(Emitter {
                     shape,
-                    emission: material.emission,
-                })
+                    emission: emission(primitive.material_of(element)),
+                });
+                element += 1;
             });
             if entries.len() > start {
                 first_entry[index] = start as u32;
@@ -126,6 +134,7 @@ impl Emitters {
 
     /// Picks an emitter with `select` and a point on it with `u`, as seen from
     /// `reference` at shutter time `time`.
+    #[inline]
     pub fn sample(
         &self,
         reference: &Point3,

@@ -177,6 +177,7 @@ fn world_hits_find_the_density_their_light_sample_had() {
                 mesh,
                 smooth: false,
                 material: 0,
+                face_materials: None,
             },
         ),
         transformed(

@@ -366,6 +366,9 @@ pub struct MeshData {
     pub triangles: Vec<[u32; 3]>,
 }
 
+/// In `Object::Mesh::face_materials`: the triangle has the mesh's own material.
+pub const OWN_MATERIAL: u32 = u32::MAX;
+
 /// A node of the object tree.
 #[derive(Clone, Debug)]
 pub enum Object {
@@ -409,9 +412,16 @@ pub enum Object {
     },
     Mesh {
         mesh: Arc<MeshData>,
-        /// Interpolate the OBJ's vertex normals (when it has them).
+        /// Shade with interpolated normals even when the OBJ has no `vn`
+        /// (area-weighted vertex normals are computed then); the file's own
+        /// `vn` are interpolated either way.
         smooth: bool,
         material: usize,
+        /// Per triangle (index into `MeshData::triangles`): the material of
+        /// the OBJ's `.mtl` (an index into `Scene::materials`), or
+        /// [`OWN_MATERIAL`] for `material`. `None`: every triangle has
+        /// `material`.
+        face_materials: Option<Arc<[u32]>>,
     },
     Revolution {
         profile: Profile,
@@ -432,6 +442,24 @@ impl Object {
             | Object::Revolution { material, .. } => Some(*material),
             Object::Group(_) | Object::Transform { .. } => None,
         }
+    }
+
+    /// Every material a leaf shades with: its own and, for a mesh with
+    /// `.mtl` materials, those of its triangles (repeats included).
+    pub fn materials(&self) -> impl Iterator<Item = usize> + '_ {
+        let faces = match self {
+            Object::Mesh {
+                face_materials: Some(faces),
+                ..
+            } => &faces[..],
+            _ => &[],
+        };
+        self.material().into_iter().chain(
+            faces
+                .iter()
+                .filter(|&&m| m != OWN_MATERIAL)
+                .map(|&m| m as usize),
+        )
     }
 
     /// Calls `visit` on every leaf (non-group, non-transform) node.

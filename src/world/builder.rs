@@ -1,22 +1,40 @@
 //! Flattening the scene's object tree into world primitives.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use super::Primitive;
 use crate::geometry::{
     Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, Transform, Triangle,
 };
-use crate::scene::model::Object;
+use crate::scene::model::{MeshData, Object};
 
 #[derive(Default)]
 pub(super) struct Builder {
     pub(super) primitives: Vec<Primitive>,
     /// One geometry mesh per distinct `MeshData` allocation.
-    meshes: HashMap<*const crate::scene::model::MeshData, Arc<Mesh>>,
+    meshes: HashMap<*const MeshData, Arc<Mesh>>,
+    /// The mesh data that some instance shades `smooth`.
+    smooth: HashSet<*const MeshData>,
 }
 
 impl Builder {
+    /// A builder for the tree under `root`: it notes which meshes some
+    /// instance shades smooth, so that their vertex normals are computed
+    /// once, for all instances.
+    pub(super) fn for_tree(root: &Object) -> Builder {
+        let mut builder = Builder::default();
+        root.for_each_leaf(&mut |leaf| {
+            if let Object::Mesh {
+                mesh, smooth: true, ..
+            } = leaf
+            {
+                builder.smooth.insert(Arc::as_ptr(mesh));
+            }
+        });
+        builder
+    }
+
     pub(super) fn visit(&mut self, object: &Object, transform: Option<&Transform>) {
         let shape = match object {
             Object::Group(children) => {
@@ -60,10 +78,16 @@ impl Builder {
                 ..
             } => Disk::new(*center, *normal, *radius).map(Shape::Disk),
             Object::Mesh { mesh, smooth, .. } => {
-                let shared = self
-                    .meshes
-                    .entry(Arc::as_ptr(mesh))
-                    .or_insert_with(|| Arc::new(Mesh::new(Arc::clone(mesh))));
+                let key = Arc::as_ptr(mesh);
+                let smooth_somewhere = self.smooth.contains(&key);
+                let shared = self.meshes.entry(key).or_insert_with(|| {
+                    let data = Arc::clone(mesh);
+                    Arc::new(if smooth_somewhere {
+                        Mesh::with_smooth_normals(data)
+                    } else {
+                        Mesh::new(data)
+                    })
+                });
                 Some(Shape::Mesh {
                     mesh: Arc::clone(shared),
                     smooth: *smooth,
@@ -74,6 +98,10 @@ impl Builder {
             }
         };
         let material = object.material().unwrap_or(0);
+        let face_materials = match object {
+            Object::Mesh { face_materials, .. } => face_materials.clone(),
+            _ => None,
+        };
         if let Some(shape) = shape {
             let transform = transform
                 .filter(|t| !t.is_identity())
@@ -82,6 +110,7 @@ impl Builder {
                 shape,
                 transform,
                 material,
+                face_materials,
             });
         }
     }

@@ -34,10 +34,14 @@ pub struct WorldHit {
     pub geometric_normal: Vec3,
     /// Unit interpolated normal (meshes with normals), else the geometric one.
     pub shading_normal: Vec3,
-    /// Unit tangent along increasing u (for normal maps).
-    pub tangent: Vec3,
+    /// Partial derivatives of `point` with respect to `uv` (not normalised;
+    /// per texel for [`UvMapping::Tiled`]), for normal and bump maps.
+    pub dpdu: Vec3,
+    pub dpdv: Vec3,
     pub uv: [f64; 2],
     pub uv_mapping: UvMapping,
+    /// The material of the primitive, or of the triangle for meshes with
+    /// `.mtl` materials ([`Primitive::material_of`]).
     pub material: usize,
     /// Index of the primitive in the world (see [`World::primitive`]).
     pub primitive: usize,
@@ -79,26 +83,28 @@ pub struct World {
     bvh: Bvh,
     /// Bounds of the bounded primitives.
     bounds: Aabb,
-    /// Per material: whether a texture or normal map reads uv and tangents.
+    /// Per material: whether a texture, normal or bump map reads uv and the
+    /// surface derivatives.
     /// Empty: compute them always.
     needs_uv: Vec<bool>,
 }
 
 impl World {
     /// Flattens the object tree: nested transforms are composed (identities are
-    /// dropped), each distinct mesh (`Arc` identity) gets one triangle BVH shared by
-    /// its instances, and a top-level BVH is built over the bounded primitives
-    /// (unless they are few).
+    /// dropped), each distinct mesh (`Arc` identity) gets one triangle BVH (and,
+    /// when some instance is `smooth` and the file has no normals, one set of
+    /// area-weighted vertex normals) shared by its instances, and a top-level
+    /// BVH is built over the bounded primitives (unless they are few).
     /// Degenerate shapes (zero radius, zero normal, zero area, unusable profiles)
     /// are dropped.
     pub fn build(scene: &Scene) -> World {
-        let mut builder = Builder::default();
+        let mut builder = Builder::for_tree(&scene.root);
         builder.visit(&scene.root, None);
         let mut world = World::from_primitives(builder.primitives);
         world.needs_uv = scene
             .materials
             .iter()
-            .map(|m| m.texture.is_some() || m.normal_map.is_some())
+            .map(|m| m.texture.is_some() || m.normal_map.is_some() || m.bump.is_some())
             .collect();
         world
     }
@@ -175,11 +181,8 @@ impl World {
         }
         let (index, hit) = best?;
         let primitive = &self.primitives[index];
-        let with_uv = self
-            .needs_uv
-            .get(primitive.material)
-            .copied()
-            .unwrap_or(true);
+        let material = primitive.material_of(hit.index);
+        let with_uv = self.needs_uv.get(material).copied().unwrap_or(true);
         let surface = primitive.surface(ray, &hit, with_uv);
         debug_assert!(surface.point.iter().all(|c| c.is_finite()));
         Some(WorldHit {
@@ -187,10 +190,11 @@ impl World {
             point: surface.point,
             geometric_normal: surface.geometric_normal,
             shading_normal: surface.shading_normal,
-            tangent: surface.tangent,
+            dpdu: surface.dpdu,
+            dpdv: surface.dpdv,
             uv: surface.uv,
             uv_mapping: surface.uv_mapping,
-            material: primitive.material,
+            material,
             primitive: index,
             element: hit.index,
         })
@@ -260,6 +264,7 @@ mod tests {
             mesh: Arc::clone(&data),
             smooth: false,
             material,
+            face_materials: None,
         };
         let root = Object::Group(vec![
             translate(
@@ -335,6 +340,7 @@ mod tests {
                 shape,
                 transform,
                 material: i,
+                face_materials: None,
             });
         }
         for axis in 0..3 {
@@ -345,6 +351,7 @@ mod tests {
                 shape: Shape::Plane(plane),
                 transform: None,
                 material: 100 + axis,
+                face_materials: None,
             });
         }
         primitives

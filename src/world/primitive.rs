@@ -1,8 +1,11 @@
 //! One shape of the world with its material and optional transform: the
 //! object-space queries moved to world space.
 
+use std::sync::Arc;
+
 use crate::geometry::{Intersection, Shape, SurfaceHit, Transform};
 use crate::math::{Aabb, Ray};
+use crate::scene::model::OWN_MATERIAL;
 
 /// One shape with its material and optional object-to-world transform.
 #[derive(Clone, Debug)]
@@ -11,9 +14,37 @@ pub struct Primitive {
     /// `None` for the identity.
     pub transform: Option<Box<Transform>>,
     pub material: usize,
+    /// A mesh's per-triangle materials (from its `.mtl`; [`OWN_MATERIAL`]
+    /// for `material`), indexed by the hit's element. `None`: `material`
+    /// everywhere.
+    pub face_materials: Option<Arc<[u32]>>,
 }
 
 impl Primitive {
+    /// The material of element `element` (a mesh's triangle; 0 for other shapes).
+    #[inline]
+    pub fn material_of(&self, element: u32) -> usize {
+        match self
+            .face_materials
+            .as_ref()
+            .and_then(|faces| faces.get(element as usize))
+        {
+            Some(&m) if m != OWN_MATERIAL => m as usize,
+            _ => self.material,
+        }
+    }
+
+    /// Every material of the primitive (its own, and its triangles').
+    pub fn materials(&self) -> impl Iterator<Item = usize> + '_ {
+        let faces = self.face_materials.as_deref().unwrap_or(&[]);
+        std::iter::once(self.material).chain(
+            faces
+                .iter()
+                .filter(|&&m| m != OWN_MATERIAL)
+                .map(|&m| m as usize),
+        )
+    }
+
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
         match &self.transform {
@@ -35,7 +66,7 @@ impl Primitive {
     }
 
     /// The world-space surface of a hit found by [`Primitive::intersect`]
-    /// (uv and tangent only `with_uv`, see [`Shape::surface`]).
+    /// (uv and surface derivatives only `with_uv`, see [`Shape::surface`]).
     pub fn surface(&self, ray: &Ray, hit: &Intersection, with_uv: bool) -> SurfaceHit {
         match &self.transform {
             None => self.shape.surface(ray, hit, with_uv),

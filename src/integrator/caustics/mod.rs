@@ -66,7 +66,7 @@ pub fn prepare(scene: &Scene, world: &World, emitters: &mut Emitters) -> bool {
     let casters: Vec<_> = world
         .primitives()
         .iter()
-        .filter(|primitive| is_specular(primitive.material))
+        .filter(|primitive| primitive.materials().any(is_specular))
         .collect();
     if casters.is_empty() || emitters.is_empty() {
         return false;

@@ -2,6 +2,7 @@
 
 use crate::color::Color;
 use crate::scene::ast::{Block, ItemKind};
+use crate::scene::build::textures::{MapName, SurfaceMapRef};
 use crate::scene::build::weights::{Fields, Kind, preset, resolve};
 use crate::scene::build::{Context, Cursor};
 use crate::scene::error::{Location, SceneError};
@@ -19,7 +20,9 @@ pub struct PathRef {
 pub struct MaterialSpec {
     pub material: Material,
     pub texture: Option<PathRef>,
-    pub normal_map: Option<PathRef>,
+    /// A surface map: a normal map or a height map, which the loader
+    /// decides from the key that named it and the image.
+    pub surface_map: Option<SurfaceMapRef>,
 }
 
 impl MaterialSpec {
@@ -27,7 +30,7 @@ impl MaterialSpec {
         MaterialSpec {
             material,
             texture: None,
-            normal_map: None,
+            surface_map: None,
         }
     }
 }
@@ -202,8 +205,16 @@ fn read_field(
             f.texture = Some(path_after(cursor, context, key)?)
         }
         "bump" | "normal_file" | "bumpMap" | "normal" => {
-            f.normal_map = Some(path_after(cursor, context, key)?);
-            cursor.take_numbers();
+            // The image decides between height and normal map at load, the
+            // key only says which is assumed (see `textures`); a number after
+            // the path is the height scale.
+            let path = path_after(cursor, context, key)?;
+            let named = match key {
+                "bump" | "bumpMap" => MapName::Bump,
+                _ => MapName::Normal,
+            };
+            let scale = cursor.take_numbers().first().copied().unwrap_or(1.0);
+            f.surface_map = Some(SurfaceMapRef { path, named, scale });
         }
         "nTexture" => {
             cursor.word(context, key)?;

@@ -6,6 +6,8 @@ mod dialect;
 mod lights;
 mod lobes;
 mod material;
+mod meshes;
+mod mtl;
 mod obj;
 mod objects;
 mod paths;
@@ -171,8 +173,15 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
     for (block, location) in group_blocks {
         roots.push(objects.group(&mut context, block, location)?);
     }
+    // Scene materials, then the .mtl materials that meshes use, then the
+    // materials of the emitting disks and parallelograms of lights.
+    let mut specs: Vec<textures::MaterialImages> = specs
+        .into_iter()
+        .map(textures::MaterialImages::from_spec)
+        .collect();
+    specs.extend(objects.take_materials());
     for (material, object) in lights::emitting_geometry(&lights, specs.len()) {
-        specs.push(material::MaterialSpec::new(material));
+        specs.push(textures::MaterialImages::plain(material));
         roots.push(object);
     }
     let root = match roots.len() {
@@ -182,7 +191,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
     let texture_start = std::time::Instant::now();
     let (materials, textures) = textures::load_textures(&mut context, specs, &root)?;
     let load = crate::scene::model::LoadStats {
-        mesh_seconds: objects.mesh_seconds,
+        mesh_seconds: objects.mesh_seconds(),
         meshes_loaded: objects.meshes_loaded(),
         texture_seconds: texture_start.elapsed().as_secs_f64(),
         textures_loaded: textures.len(),

@@ -1,32 +1,92 @@
-//! OBJ meshes through `tobj`: triangulated, single-indexed, all models merged into one.
+//! OBJ meshes through `tobj`: triangulated, single-indexed, all models merged
+//! into one, with the `.mtl` materials of their faces (converted by `mtl`).
 
+use std::cell::RefCell;
+use std::io::BufReader;
 use std::panic::{AssertUnwindSafe, catch_unwind};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use crate::math::{Point3, Vec3};
-use crate::scene::model::MeshData;
+use crate::scene::model::{MeshData, OWN_MATERIAL};
 
-/// Loads an OBJ file. `Ok((mesh, warnings))`; a missing `.mtl` is only a warning.
-pub fn load_obj(path: &Path) -> Result<(MeshData, Vec<String>), String> {
+/// A `.mtl` file as read: where it is and its text (to find the lines of
+/// fields for messages).
+#[derive(Clone, Debug)]
+pub struct MaterialLibrary {
+    pub path: PathBuf,
+    pub text: String,
+}
+
+/// An OBJ file's `.mtl` materials and which triangle uses which.
+#[derive(Clone, Debug)]
+pub struct ObjMaterials {
+    pub materials: Vec<tobj::Material>,
+    /// Per material: its library (index into `libraries`).
+    pub library_of: Vec<usize>,
+    pub libraries: Vec<MaterialLibrary>,
+    /// Per triangle: an index into `materials`, or [`OWN_MATERIAL`] (no
+    /// `usemtl`, or an unknown name).
+    pub faces: Vec<u32>,
+}
+
+/// A loaded OBJ: the mesh, its `.mtl` materials when some face uses one,
+/// and warnings (a missing or unreadable `.mtl`).
+pub struct LoadedObj {
+    pub mesh: MeshData,
+    pub materials: Option<ObjMaterials>,
+    pub warnings: Vec<String>,
+}
+
+/// Loads an OBJ file; a missing `.mtl` is only a warning.
+pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: true,
         ignore_points: true,
         ignore_lines: true,
     };
-    let loaded = catch_unwind(AssertUnwindSafe(|| tobj::load_obj(path, &options)))
-        .map_err(|_| format!("cannot read mesh '{}': malformed OBJ", path.display()))?;
+    let file = std::fs::File::open(path)
+        .map_err(|e| format!("cannot read mesh '{}': {e}", path.display()))?;
+    let folder = path.parent().unwrap_or(Path::new("")).to_path_buf();
+    // tobj calls this once per `mtllib`, in order, and appends the materials
+    // it returns: record each library with its text and material count.
+    let libraries = RefCell::new(Vec::<(MaterialLibrary, usize)>::new());
+    let warnings = RefCell::new(Vec::new());
+    let load_library = |name: &Path| {
+        let full = folder.join(name);
+        let text = match std::fs::read_to_string(&full) {
+            Ok(text) => text,
+            Err(e) => {
+                warnings.borrow_mut().push(format!(
+                    "mesh '{}': materials not loaded ('{}': {e})",
+                    path.display(),
+                    full.display()
+                ));
+                return Err(tobj::LoadError::OpenFileFailed);
+            }
+        };
+        let result = tobj::load_mtl_buf(&mut text.as_bytes());
+        match &result {
+            Ok((materials, _)) => libraries
+                .borrow_mut()
+                .push((MaterialLibrary { path: full, text }, materials.len())),
+            Err(e) => warnings.borrow_mut().push(format!(
+                "mesh '{}': materials of '{}' not loaded ({e})",
+                path.display(),
+                full.display()
+            )),
+        }
+        result
+    };
+    let mut reader = BufReader::new(file);
+    let loaded = catch_unwind(AssertUnwindSafe(|| {
+        tobj::load_obj_buf(&mut reader, &options, load_library)
+    }))
+    .map_err(|_| format!("cannot read mesh '{}': malformed OBJ", path.display()))?;
     let (models, materials) =
         loaded.map_err(|e| format!("cannot read mesh '{}': {e}", path.display()))?;
-    let mut warnings = Vec::new();
-    if let Err(e) = materials
-        && !models.is_empty()
-    {
-        warnings.push(format!(
-            "mesh '{}': materials not loaded ({e})",
-            path.display()
-        ));
-    }
+    let warnings = warnings.into_inner();
+    let mut faces = Vec::new();
     let mut mesh = MeshData::default();
     let mut normals: Option<Vec<Vec3>> = Some(Vec::new());
     let mut uvs: Option<Vec<[f64; 2]>> = Some(Vec::new());
@@ -75,12 +135,38 @@ pub fn load_obj(path: &Path) -> Result<(MeshData, Vec<String>), String> {
                 *slot = global as u32;
             }
             mesh.triangles.push(triangle);
+            faces.push(m.material_id.map_or(OWN_MATERIAL, |id| id as u32));
         }
     }
     let has_vertices = !mesh.positions.is_empty();
     mesh.normals = normals.filter(|_| has_vertices);
     mesh.uvs = uvs.filter(|_| has_vertices);
-    Ok((mesh, warnings))
+    let materials = materials.unwrap_or_default();
+    let mut library_of = Vec::new();
+    let mut libraries_read = Vec::new();
+    for (index, (library, count)) in libraries.into_inner().into_iter().enumerate() {
+        library_of.extend(std::iter::repeat_n(index, count));
+        libraries_read.push(library);
+    }
+    let count = materials.len() as u32;
+    for face in &mut faces {
+        if *face >= count {
+            *face = OWN_MATERIAL;
+        }
+    }
+    let used = faces.iter().any(|&m| m != OWN_MATERIAL);
+    let complete = library_of.len() == materials.len();
+    let materials = (used && complete).then_some(ObjMaterials {
+        materials,
+        library_of,
+        libraries: libraries_read,
+        faces,
+    });
+    Ok(LoadedObj {
+        mesh,
+        materials,
+        warnings,
+    })
 }
 
 #[cfg(test)]
@@ -94,11 +180,36 @@ mod tests {
         let file = dir.join("q.obj");
         let text = "mtllib nothere.mtl\r\nv 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\nf -4 -3 -2 -1\r\no second\r\nv 0 0 1\r\nv 1 0 1\r\nv 0 1 1\r\nf 5 6 7\r\n";
         std::fs::write(&file, text).expect("write");
-        let (mesh, warnings) = load_obj(&file).expect("loads");
+        let LoadedObj {
+            mesh,
+            materials,
+            warnings,
+        } = load_obj(&file).expect("loads");
+        assert!(materials.is_none());
         assert_eq!(mesh.positions.len(), 7);
         assert_eq!(mesh.triangles.len(), 3);
         assert!(mesh.triangles.iter().flatten().all(|&i| i < 7));
         assert_eq!(warnings.len(), 1);
         assert!(load_obj(&dir.join("none.obj")).is_err());
+    }
+
+    #[test]
+    fn faces_know_their_mtl_material_and_its_library() {
+        let dir = std::env::temp_dir().join(format!("pt-obj-mtl-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        std::fs::write(dir.join("a.mtl"), "newmtl red\nKd 1 0 0\n").expect("write");
+        std::fs::write(dir.join("b.mtl"), "newmtl lamp\nKe 5 5 5\n").expect("write");
+        let text = "mtllib a.mtl\nmtllib b.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n\
+                    f 1 2 3\nusemtl lamp\nf 2 4 3\nusemtl red\nf 1 2 4\nusemtl nothere\nf 1 3 4\n";
+        let file = dir.join("m.obj");
+        std::fs::write(&file, text).expect("write");
+        let loaded = load_obj(&file).expect("loads");
+        assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+        let materials = loaded.materials.expect("faces use materials");
+        assert_eq!(materials.faces, [OWN_MATERIAL, 1, 0, OWN_MATERIAL]);
+        assert_eq!(materials.library_of, [0, 1]);
+        assert_eq!(materials.materials[1].name, "lamp");
+        assert!(materials.libraries[1].path.ends_with("b.mtl"));
+        assert!(materials.libraries[1].text.contains("Ke 5 5 5"));
     }
 }

@@ -1,26 +1,25 @@
 //! The object tree: groups, the global `MaterialIndex`, transforms, meshes, revolutions.
 
-use std::collections::HashMap;
-use std::path::PathBuf;
-use std::sync::Arc;
-
 use nalgebra::Rotation3;
 
 use crate::math::{Matrix, Vec3};
 use crate::scene::ast::{Block, ItemKind};
+use crate::scene::build::meshes::{MaterialChoice, Meshes};
 use crate::scene::build::shapes::{Fields, build_shape};
+use crate::scene::build::textures::MaterialImages;
 use crate::scene::build::transform::wrap;
-use crate::scene::build::{Context, Cursor, obj, paths, transform};
+use crate::scene::build::{Context, Cursor, paths, transform};
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{CurveKind, MeshData, Object, Profile};
+use crate::scene::model::{CurveKind, Object, Profile};
 
 /// Walks `Group` blocks; the current material is global state, as in the original.
 pub struct ObjectBuilder {
     material_count: usize,
     current: usize,
-    meshes: HashMap<PathBuf, Arc<MeshData>>,
-    /// Time spent reading OBJ files.
-    pub mesh_seconds: f64,
+    /// The `MaterialIndex` that chose `current`; `None` while it is the
+    /// implicit default (decides whether a mesh's `.mtl` materials apply).
+    chosen: Option<MaterialChoice>,
+    meshes: Meshes,
 }
 
 impl ObjectBuilder {
@@ -29,12 +28,23 @@ impl ObjectBuilder {
         self.meshes.len()
     }
 
+    /// Time spent reading OBJ files.
+    pub fn mesh_seconds(&self) -> f64 {
+        self.meshes.seconds
+    }
+
+    /// The `.mtl` materials that meshes use, numbered from the scene's
+    /// material count on (taken once, after all groups).
+    pub fn take_materials(&mut self) -> Vec<MaterialImages> {
+        self.meshes.take_materials()
+    }
+
     pub fn new(material_count: usize) -> Self {
         ObjectBuilder {
             material_count,
             current: 0,
-            meshes: HashMap::new(),
-            mesh_seconds: 0.0,
+            chosen: None,
+            meshes: Meshes::new(material_count),
         }
     }
 
@@ -99,6 +109,10 @@ impl ObjectBuilder {
             ));
         }
         self.current = index as usize;
+        self.chosen = Some(MaterialChoice {
+            index,
+            location: at,
+        });
         Ok(())
     }
 
@@ -136,7 +150,12 @@ impl ObjectBuilder {
         }
     }
 
-    /// `TriangleMesh { [smooth] obj_file path }`.
+    /// `TriangleMesh { [smooth] obj_file path }`. Shading normals: the OBJ's
+    /// `vn` are always interpolated when it has them; `smooth` (or
+    /// `normalInterpolation`) asks for interpolated normals also when it has
+    /// none, which are then area-weighted vertex normals computed once per
+    /// file (see `geometry::mesh`). Without either, triangles are flat.
+    /// The file's `.mtl` materials apply as `meshes` says.
     fn mesh(
         &mut self,
         context: &mut Context,
@@ -172,24 +191,12 @@ impl ObjectBuilder {
                 ),
             )
         })?;
-        let mesh = match self.meshes.get(&path) {
-            Some(mesh) => mesh.clone(),
-            None => {
-                let started = std::time::Instant::now();
-                let (mesh, warnings) = obj::load_obj(&path).map_err(|e| context.error(at, e))?;
-                self.mesh_seconds += started.elapsed().as_secs_f64();
-                for warning in warnings {
-                    context.warn(at, warning)?;
-                }
-                let mesh = Arc::new(mesh);
-                self.meshes.insert(path, mesh.clone());
-                mesh
-            }
-        };
+        let instance = self.meshes.instance(context, &path, at, self.chosen)?;
         Ok(Object::Mesh {
-            mesh,
+            mesh: instance.mesh,
             smooth,
             material: self.current,
+            face_materials: instance.face_materials,
         })
     }
 

@@ -1,4 +1,14 @@
-//! Loading the images of the materials that some object actually uses.
+//! Loading the images of the materials that some object actually uses, and
+//! deciding what a surface-map image is: a height (bump) map or a
+//! tangent-space normal map.
+//!
+//! The key names a kind and the image can overrule it: a `bump`/`bumpMap`
+//! (.mtl `bump`/`map_Bump`) image is a height map unless it clearly is a
+//! normal map (not greyscale, mean blue at least 0.6, mean red and green
+//! within 0.1 of 0.5); a `normal`/`normal_file` (.mtl `norm`) image is a
+//! normal map unless it is greyscale (every texel with r, g and b within
+//! 2/255 of each other). A height map's scale is the number after its path
+//! (cyy's `bump path strength`), 1 by default.
 
 use std::collections::{BTreeSet, HashMap};
 use std::path::PathBuf;
@@ -7,20 +17,64 @@ use std::sync::Arc;
 use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::build::{Context, paths};
 use crate::scene::error::SceneError;
-use crate::scene::model::{Material, Object};
+use crate::scene::model::{Bump, Material, Object};
 use crate::texture::Texture;
+
+/// Which kind of key named a surface-map image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MapName {
+    /// `bump`, `bumpMap`, .mtl `bump` and `map_Bump`.
+    Bump,
+    /// `normal`, `normal_file`, .mtl `norm`.
+    Normal,
+}
+
+/// A surface-map image as a material names it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SurfaceMapRef {
+    pub path: PathRef,
+    pub named: MapName,
+    pub scale: f64,
+}
+
+/// A material and the images it names, before they are loaded.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MaterialImages {
+    pub material: Material,
+    pub texture: Option<PathRef>,
+    /// Normal and height maps (a `.mtl` may name one of each).
+    pub surface_maps: Vec<SurfaceMapRef>,
+}
+
+impl MaterialImages {
+    /// A scene material and the images it names.
+    pub fn from_spec(spec: MaterialSpec) -> MaterialImages {
+        MaterialImages {
+            material: spec.material,
+            texture: spec.texture,
+            surface_maps: spec.surface_map.into_iter().collect(),
+        }
+    }
+
+    /// A material that names no images.
+    pub fn plain(material: Material) -> MaterialImages {
+        MaterialImages {
+            material,
+            texture: None,
+            surface_maps: Vec::new(),
+        }
+    }
+}
 
 /// Final materials and the texture table. Unused materials keep no images.
 pub fn load_textures(
     context: &mut Context,
-    specs: Vec<MaterialSpec>,
+    specs: Vec<MaterialImages>,
     root: &Object,
 ) -> Result<(Vec<Material>, Vec<Arc<Texture>>), SceneError> {
     let mut used = BTreeSet::new();
     root.for_each_leaf(&mut |leaf| {
-        if let Some(m) = leaf.material() {
-            used.insert(m);
-        }
+        used.extend(leaf.materials());
     });
     let mut textures = Vec::new();
     let mut cache: HashMap<PathBuf, usize> = HashMap::new();
@@ -31,13 +85,67 @@ pub fn load_textures(
             if let Some(path) = &spec.texture {
                 material.texture = Some(load(context, path, &mut cache, &mut textures)?);
             }
-            if let Some(path) = &spec.normal_map {
-                material.normal_map = Some(load(context, path, &mut cache, &mut textures)?);
+            for map in &spec.surface_maps {
+                let texture = load(context, &map.path, &mut cache, &mut textures)?;
+                let replaced = if is_height_map(&textures[texture], map.named) {
+                    material
+                        .bump
+                        .replace(Bump {
+                            texture,
+                            scale: map.scale,
+                        })
+                        .is_some()
+                } else {
+                    material.normal_map.replace(texture).is_some()
+                };
+                if replaced {
+                    context.warn(
+                        map.path.location,
+                        format!(
+                            "'{}' replaces another map of the same kind (height or normal)",
+                            map.path.path
+                        ),
+                    )?;
+                }
             }
         }
         materials.push(material);
     }
     Ok((materials, textures))
+}
+
+/// Whether the image named by a key of kind `named` is read as a height map
+/// (else as a tangent-space normal map); see the module docs.
+pub fn is_height_map(texture: &Texture, named: MapName) -> bool {
+    match named {
+        MapName::Bump => !looks_like_normal_map(texture),
+        MapName::Normal => is_greyscale(texture),
+    }
+}
+
+/// Every texel has r, g and b within 2/255 of each other (and a little
+/// for the decoder's rounding).
+fn is_greyscale(texture: &Texture) -> bool {
+    const TOLERANCE: f32 = 2.0 / 255.0 + 1e-4;
+    texture.texels.iter().all(|&[r, g, b]| {
+        (r - g).abs() <= TOLERANCE && (r - b).abs() <= TOLERANCE && (g - b).abs() <= TOLERANCE
+    })
+}
+
+/// Not greyscale, mostly blue, red and green centred on 0.5: what a
+/// tangent-space normal map of a mostly flat surface looks like.
+fn looks_like_normal_map(texture: &Texture) -> bool {
+    if texture.texels.is_empty() || is_greyscale(texture) {
+        return false;
+    }
+    let mut sum = [0.0f64; 3];
+    for texel in &texture.texels {
+        for (s, &c) in sum.iter_mut().zip(texel) {
+            *s += c as f64;
+        }
+    }
+    let [r, g, b] = sum.map(|s| s / texture.texels.len() as f64);
+    b >= 0.6 && (r - 0.5).abs() <= 0.1 && (g - 0.5).abs() <= 0.1
 }
 
 fn load(
@@ -85,4 +193,33 @@ pub fn read_image(file: &std::path::Path) -> Result<Texture, String> {
         height: height as usize,
         texels,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn image(texels: Vec<[f32; 3]>) -> Texture {
+        Texture {
+            width: texels.len(),
+            height: 1,
+            texels,
+        }
+    }
+
+    #[test]
+    fn the_image_overrules_the_key_only_when_it_is_clear() {
+        let grey = image(vec![[0.2, 0.2, 0.2 + 2.0 / 255.0], [0.7, 0.7, 0.7]]);
+        let normal = image(vec![[0.5, 0.5, 1.0], [0.55, 0.45, 0.9]]);
+        let photo = image(vec![[0.9, 0.2, 0.1], [0.3, 0.6, 0.2]]);
+        assert!(is_height_map(&grey, MapName::Bump));
+        assert!(is_height_map(&grey, MapName::Normal));
+        assert!(!is_height_map(&normal, MapName::Bump));
+        assert!(!is_height_map(&normal, MapName::Normal));
+        assert!(is_height_map(&photo, MapName::Bump));
+        assert!(!is_height_map(&photo, MapName::Normal));
+        // 3/255 apart is colour.
+        let tinted = image(vec![[0.5, 0.5 + 3.0 / 255.0, 0.5]]);
+        assert!(!is_height_map(&tinted, MapName::Normal));
+    }
 }

@@ -4,6 +4,7 @@ use crate::color::Color;
 use crate::scene::build::Context;
 use crate::scene::build::lobes::add_lobes;
 use crate::scene::build::material::{MaterialSpec, PathRef};
+use crate::scene::build::textures::SurfaceMapRef;
 use crate::scene::error::{Location, SceneError};
 use crate::scene::model::{AngularWeights, Dialect, Material};
 
@@ -77,7 +78,7 @@ pub struct Fields {
     pub cook_torrance: Option<(f64, f64)>,
     pub angular: Option<AngularWeights>,
     pub texture: Option<PathRef>,
-    pub normal_map: Option<PathRef>,
+    pub surface_map: Option<SurfaceMapRef>,
 }
 
 /// Clamps negative weights and scales them to sum to 1 (diffuse if they sum to 0).
@@ -183,6 +184,6 @@ pub fn resolve(
     Ok(MaterialSpec {
         material,
         texture: f.texture,
-        normal_map: f.normal_map,
+        surface_map: f.surface_map,
     })
 }
