@@ -5,6 +5,11 @@
 #
 #   scripts/curves.sh            # all three scenes
 #   SCENES="sample_rec" W=128 H=96 REF_SPP=1024 scripts/curves.sh
+#   BASELINE=../old/target/release/pathtracer scripts/curves.sh
+#
+# With BASELINE (another build of pathtracer, e.g. of the previous commit),
+# its curves are drawn too, in the same run: how a change moves
+# time-to-error ("baseline path" against "path").
 #
 # Our reference is the path integrator at REF_SPP (the same expected image as
 # the original estimator: tests/integrator_agreement.rs); Mitsuba's error is
@@ -45,6 +50,15 @@ for name in $SCENES; do
             --csv "$out/ours_$integrator.csv" --plot "$out/ours_$integrator.svg" > /dev/null
     done
     curves=("original=$out/ours_original.csv" "path=$out/ours_path.csv")
+    if [ -n "${BASELINE:-}" ]; then
+        for integrator in original path; do
+            "$BASELINE" converge "$scene" --width "$W" --height "$H" --max-spp "$MAX_SPP" \
+                --seed 1 --integrator "$integrator" --reference "$out/ours_reference.pfm" \
+                --csv "$out/baseline_$integrator.csv" --plot "$out/baseline_$integrator.svg" \
+                > /dev/null
+            curves+=("baseline $integrator=$out/baseline_$integrator.csv")
+        done
+    fi
     if [ -x "$PYTHON" ]; then
         $PYTHON scripts/mitsuba_converge.py --scene "$scene" --variant "$VARIANT" \
             --width "$W" --height "$H" --max-spp "$MAX_SPP" --reference-spp "$REF_SPP" \

@@ -2,7 +2,7 @@
 //! (texture or constant), and normals (interpolated, normal- and bump-mapped,
 //! see `surface_maps`) oriented towards the incoming ray.
 
-use crate::bsdf::{Bsdf, Rules, from_material};
+use crate::bsdf::{Bsdf, LobeSet, Rules};
 use crate::color::Color;
 use crate::math::{Point3, Ray, Vec3, offset_origin};
 use crate::scene::model::{Material, Scene};
@@ -13,6 +13,8 @@ use crate::world::WorldHit;
 pub struct Shading<'a> {
     pub point: Point3,
     pub material: &'a Material,
+    /// Its index in the scene's materials.
+    pub material_index: usize,
     /// Texture colour where the material has a texture, else its colour.
     pub color: Color,
     /// Unit geometric normal on the side the ray came from.
@@ -56,6 +58,7 @@ impl<'a> Shading<'a> {
         Shading {
             point: hit.point,
             material,
+            material_index: hit.material,
             color,
             geometric,
             normal,
@@ -63,21 +66,12 @@ impl<'a> Shading<'a> {
         }
     }
 
-    /// Makes `bsdf` the BSDF of this hit for light leaving towards `wo`
-    /// (unit, on the side of the normals).
+    /// The BSDF of this hit, made of `set` (its material's lobes), for
+    /// light leaving towards `wo` (unit, on the side of the normals).
     #[inline(always)]
-    pub fn build_bsdf(&self, bsdf: &mut Bsdf, wo: &Vec3, rules: Rules) {
+    pub fn bsdf<'s>(&self, set: &'s LobeSet, wo: &Vec3, rules: Rules) -> Bsdf<'s> {
         let cos_o = self.normal.dot(wo);
-        let (material, color) = (self.material, self.color);
-        from_material(
-            bsdf,
-            material,
-            color,
-            &self.normal,
-            self.entering,
-            cos_o,
-            rules,
-        );
+        Bsdf::new(set, self.color, &self.normal, self.entering, cos_o, rules)
     }
 
     /// The origin of a ray leaving this point in `direction`: pushed off the

@@ -13,11 +13,12 @@
 //! | `phong` | energy-normalised Phong of `color`, `exponent` | 1 |
 //! | `coat` | GGX conductor with Schlick's term from `f0`, `alpha` | 1 |
 //!
-//! cav's `angular_weights` replace the specular and refract weights by
-//! their angle-dependent values (and the glass then refracts only: its
-//! reflection is the specular weight).
+//! cav's `angular_weights` replace the three weights by their
+//! angle-dependent values at each hit (and the glass then refracts only: its
+//! reflection is the specular weight). The weighted lobes take the hit's
+//! colour as their tint; Phong and the coat keep their own.
 
-use super::Bsdf;
+use super::LobeSet;
 use super::conductor::Conductor;
 use super::cook_torrance::CookTorrance;
 use super::dielectric::{Dielectric, GlassChoice};
@@ -27,7 +28,6 @@ use super::lobe::Lobe;
 use super::phong::Phong;
 use super::rough_dielectric::RoughDielectric;
 use crate::color::Color;
-use crate::math::Vec3;
 use crate::scene::model::{AngularWeights, DiffuseModel, MIN_ROUGHNESS, Material};
 
 /// Diffuse rates at or below this are ignored (the original's threshold).
@@ -41,91 +41,88 @@ pub struct Rules {
     pub glass: GlassChoice,
 }
 
-/// Makes `bsdf` the BSDF of `material` at a hit (in place: a BSDF is a few
-/// hundred bytes, and a vertex should not copy them): `color` is the
-/// material's colour there (texture or constant), `normal` the unit shading
-/// normal on the side of `wo`, `entering` whether `wo` is outside (the side
-/// the geometric normal points to), `cos_o` the cosine of `wo` with the
-/// normal (for angle-dependent weights).
-#[inline(always)]
-pub fn from_material(
-    bsdf: &mut Bsdf,
-    material: &Material,
-    color: Color,
-    normal: &Vec3,
-    entering: bool,
-    cos_o: f64,
-    rules: Rules,
-) {
-    bsdf.reset(normal);
-    let (diffuse, specular, refract) = match &material.angular_weights {
-        None => (material.diffuse, material.specular, material.refract),
-        Some(a) => a.weights(cos_o, entering, material.ior),
-    };
-    if diffuse > MIN_DIFFUSE_RATE {
-        let lobe = match material.diffuse_model {
-            DiffuseModel::Lambert => Lobe::Lambert(Lambert { albedo: color }),
-            DiffuseModel::CookTorrance { alpha, f0 } => Lobe::CookTorrance(CookTorrance {
-                color,
-                alpha: alpha.max(MIN_ROUGHNESS),
-                f0,
-            }),
+/// The lobe set of every material, in order.
+pub fn lobe_sets(materials: &[Material]) -> Vec<LobeSet> {
+    materials.iter().map(LobeSet::from_material).collect()
+}
+
+impl LobeSet {
+    /// The lobes of `material` (see the module documentation); the tints
+    /// of the weighted lobes are the hit's colour.
+    pub fn from_material(material: &Material) -> LobeSet {
+        let mut set = LobeSet {
+            ior: material.ior,
+            angular: material.angular_weights,
+            ..LobeSet::default()
         };
-        bsdf.push(lobe, diffuse);
-    }
-    let alpha = material.roughness;
-    if specular > 0.0 {
-        let conductor = Conductor {
-            tint: color,
-            alpha,
-            fresnel: material.conductor_fresnel,
-        };
-        bsdf.push(Lobe::Conductor(conductor), specular);
-    }
-    if refract > 0.0 {
-        let (eta_above, eta_below) = if entering {
-            (1.0, material.ior)
+        let angular = material.angular_weights.is_some();
+        // With angular weights every one of the three lobes is kept, its
+        // weight set per hit.
+        let (diffuse, specular, refract) = if angular {
+            (0.0, 0.0, 0.0)
         } else {
-            (material.ior, 1.0)
+            (material.diffuse, material.specular, material.refract)
         };
-        let fresnel = if material.angular_weights.is_some() {
-            DielectricFresnel::None
-        } else {
-            rules.fresnel
-        };
-        let lobe = if alpha < MIN_ROUGHNESS {
-            Lobe::Dielectric(Dielectric {
-                tint: color,
-                eta_above,
-                eta_below,
-                fresnel,
-                choice: rules.glass,
-            })
-        } else {
-            Lobe::RoughDielectric(RoughDielectric {
-                tint: color,
+        let placeholder = Color::WHITE;
+        if diffuse > MIN_DIFFUSE_RATE || angular {
+            let lobe = match material.diffuse_model {
+                DiffuseModel::Lambert => Lobe::Lambert(Lambert {
+                    albedo: placeholder,
+                }),
+                DiffuseModel::CookTorrance { alpha, f0 } => Lobe::CookTorrance(CookTorrance {
+                    color: placeholder,
+                    alpha: alpha.max(MIN_ROUGHNESS),
+                    f0,
+                }),
+            };
+            set.push_slot(lobe, diffuse, true, true);
+        }
+        let alpha = material.roughness;
+        if specular > 0.0 || angular {
+            let conductor = Conductor {
+                tint: placeholder,
                 alpha,
-                eta_above,
-                eta_below,
-                fresnel,
-            })
-        };
-        bsdf.push(lobe, refract);
-    }
-    if let Some(phong) = material.phong {
-        let lobe = Phong {
-            color: phong.color,
-            exponent: phong.exponent.max(0.0),
-        };
-        bsdf.push(Lobe::Phong(lobe), 1.0);
-    }
-    if let Some(coat) = material.coat {
-        let lobe = Conductor {
-            tint: coat.color,
-            alpha: coat.alpha,
-            fresnel: coat.fresnel,
-        };
-        bsdf.push(Lobe::Conductor(lobe), 1.0);
+                fresnel: material.conductor_fresnel,
+            };
+            set.push_slot(Lobe::Conductor(conductor), specular, true, true);
+        }
+        if refract > 0.0 || angular {
+            let lobe = if alpha < MIN_ROUGHNESS {
+                Lobe::Dielectric(Dielectric {
+                    tint: placeholder,
+                    eta_above: 1.0,
+                    eta_below: material.ior,
+                    fresnel: DielectricFresnel::None,
+                    choice: GlassChoice::default(),
+                })
+            } else {
+                Lobe::RoughDielectric(RoughDielectric {
+                    tint: placeholder,
+                    alpha,
+                    eta_above: 1.0,
+                    eta_below: material.ior,
+                    fresnel: DielectricFresnel::None,
+                })
+            };
+            // cav's glass only refracts: its reflection is the conductor.
+            set.push_slot(lobe, refract, true, !angular);
+        }
+        if let Some(phong) = material.phong {
+            let lobe = Phong {
+                color: phong.color,
+                exponent: phong.exponent.max(0.0),
+            };
+            set.push_slot(Lobe::Phong(lobe), 1.0, false, true);
+        }
+        if let Some(coat) = material.coat {
+            let lobe = Conductor {
+                tint: coat.color,
+                alpha: coat.alpha,
+                fresnel: coat.fresnel,
+            };
+            set.push_slot(Lobe::Conductor(lobe), 1.0, false, true);
+        }
+        set
     }
 }
 

@@ -13,6 +13,8 @@
 use super::conductor::Conductor;
 use super::cook_torrance::CookTorrance;
 use super::dielectric::Dielectric;
+use super::dielectric::GlassChoice;
+use super::fresnel::DielectricFresnel;
 use super::lambert::Lambert;
 use super::phong::Phong;
 use super::rough_dielectric::RoughDielectric;
@@ -78,6 +80,64 @@ impl Lobe {
             Lobe::CookTorrance(c) => c.color,
         };
         tint.average().max(0.0)
+    }
+
+    #[inline]
+    /// The colour that scales the lobe.
+    pub fn tint(&self) -> Color {
+        match self {
+            Lobe::Lambert(l) => l.albedo,
+            Lobe::Conductor(c) => c.tint,
+            Lobe::Dielectric(d) => d.tint,
+            Lobe::RoughDielectric(d) => d.tint,
+            Lobe::Phong(p) => p.color,
+            Lobe::CookTorrance(c) => c.color,
+        }
+    }
+
+    #[inline]
+    pub fn set_tint(&mut self, tint: Color) {
+        match self {
+            Lobe::Lambert(l) => l.albedo = tint,
+            Lobe::Conductor(c) => c.tint = tint,
+            Lobe::Dielectric(d) => d.tint = tint,
+            Lobe::RoughDielectric(d) => d.tint = tint,
+            Lobe::Phong(p) => p.color = tint,
+            Lobe::CookTorrance(c) => c.color = tint,
+        }
+    }
+
+    /// A dielectric given as seen from outside, seen from the side of the
+    /// outgoing direction (`entering`: the outside), with the rendering's
+    /// Fresnel term (`None`: its own) and glass choice. Other lobes are
+    /// the same from both sides.
+    #[inline]
+    pub fn set_side(
+        &mut self,
+        entering: bool,
+        fresnel: Option<DielectricFresnel>,
+        glass: GlassChoice,
+    ) {
+        match self {
+            Lobe::Dielectric(d) => {
+                if !entering {
+                    std::mem::swap(&mut d.eta_above, &mut d.eta_below);
+                }
+                if let Some(fresnel) = fresnel {
+                    d.fresnel = fresnel;
+                }
+                d.choice = glass;
+            }
+            Lobe::RoughDielectric(d) => {
+                if !entering {
+                    std::mem::swap(&mut d.eta_above, &mut d.eta_below);
+                }
+                if let Some(fresnel) = fresnel {
+                    d.fresnel = fresnel;
+                }
+            }
+            _ => {}
+        }
     }
 
     #[inline]

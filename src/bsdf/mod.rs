@@ -11,6 +11,9 @@
 //! original (`diffusionRate`, `specularRate`, `refractRate`) become the
 //! weights of a diffuse, a conductor and a dielectric lobe, and the lobes
 //! some dialects add (Phong, a GGX coat) come with weight 1 (`build`).
+//! What does not depend on the hit is a [`LobeSet`], made once per material
+//! before rendering; a [`Bsdf`] is a lobe set at one hit (its colour, its
+//! shading frame, its side of a dielectric), a few words to make.
 //! `sample` picks one lobe with probability proportional to its weight times
 //! its mean tint. A delta lobe's sample is weighted by its own weight over
 //! that probability; a continuous lobe's sample by the whole continuous
@@ -43,8 +46,9 @@ use arrayvec::ArrayVec;
 
 use crate::color::Color;
 use crate::math::{Vec3, orthonormal_basis};
+use crate::scene::model::ConductorFresnel;
 
-pub use build::{Rules, from_material};
+pub use build::{Rules, lobe_sets};
 pub use dielectric::GlassChoice;
 pub use fresnel::DielectricFresnel;
 pub use lambert::Lambert;
@@ -67,108 +71,214 @@ pub struct BsdfSample {
     pub delta: bool,
 }
 
-/// A mixture of weighted lobes in one shading frame.
-#[derive(Clone, Debug)]
-pub struct Bsdf {
-    tangent: Vec3,
-    bitangent: Vec3,
-    normal: Vec3,
+/// The lobes of a material and what does not depend on the hit: their
+/// weights, which of them take the hit's colour as their tint, and (when no
+/// lobe's choice depends on the hit) their probabilities.
+#[derive(Clone, Debug, Default)]
+pub struct LobeSet {
     lobes: ArrayVec<Lobe, MAX_LOBES>,
     weights: [f64; MAX_LOBES],
-    /// Weight times albedo estimate: lobes are chosen in proportion.
-    selection: [f64; MAX_LOBES],
-    total_selection: f64,
-    /// The part of `total_selection` of the continuous lobes.
-    smooth_selection: f64,
-    len: usize,
+    /// Whether the lobe's tint is the hit's colour (else it keeps its own).
+    tinted: [bool; MAX_LOBES],
+    /// Whether a dielectric takes the rendering's Fresnel term (cav's glass
+    /// keeps none).
+    follows_rules: [bool; MAX_LOBES],
+    /// Probabilities, when they do not depend on the hit (every lobe tinted
+    /// by the hit's colour, none with a Schlick term, no angular weights).
+    fixed: bool,
+    fixed_probabilities: [f64; MAX_LOBES],
+    /// The probability of the continuous lobes, when fixed.
+    fixed_smooth: f64,
+    /// cav's weights of lobes 0, 1, 2 (diffuse, conductor, dielectric).
+    angular: Option<crate::scene::model::AngularWeights>,
+    ior: f64,
     smooth_lobes: usize,
-    /// `sum w albedo / pi` of the Lambert lobes, and whether they are all
-    /// of the continuous part (the common case, evaluated without a frame).
-    lambert_f: Color,
     only_lambert: bool,
+    /// One Lambert lobe tinted by the hit's colour, nothing else.
+    single_lambert: bool,
     reads_choice: bool,
     reads_direction: bool,
 }
 
-impl Bsdf {
-    /// An empty BSDF (black) in the frame of the unit shading `normal`.
-    #[inline(always)]
-    pub fn new(normal: &Vec3) -> Bsdf {
-        let (tangent, bitangent) = orthonormal_basis(normal);
-        Bsdf {
-            tangent,
-            bitangent,
-            normal: *normal,
-            lobes: ArrayVec::new(),
-            weights: [0.0; MAX_LOBES],
-            selection: [0.0; MAX_LOBES],
-            total_selection: 0.0,
-            smooth_selection: 0.0,
-            len: 0,
-            smooth_lobes: 0,
-            lambert_f: Color::BLACK,
-            only_lambert: true,
-            reads_choice: false,
-            reads_direction: false,
-        }
+impl LobeSet {
+    /// Adds `lobe` with `weight`; `tinted`: its tint becomes the hit's
+    /// colour. Lobes beyond [`MAX_LOBES`] and non-positive weights are
+    /// dropped. A dielectric is given as seen from outside.
+    pub fn push(&mut self, lobe: Lobe, weight: f64, tinted: bool) {
+        self.push_slot(lobe, weight, tinted, true);
     }
 
-    /// Empties it, in the frame of the unit shading `normal`.
-    #[inline(always)]
-    pub fn reset(&mut self, normal: &Vec3) {
-        let (tangent, bitangent) = orthonormal_basis(normal);
-        self.tangent = tangent;
-        self.bitangent = bitangent;
-        self.normal = *normal;
-        self.lobes.clear();
-        self.total_selection = 0.0;
-        self.smooth_selection = 0.0;
-        self.len = 0;
-        self.smooth_lobes = 0;
-        self.lambert_f = Color::BLACK;
-        self.only_lambert = true;
-        self.reads_choice = false;
-        self.reads_direction = false;
-    }
-
-    /// Adds `lobe` with `weight` (lobes beyond [`MAX_LOBES`], non-positive
-    /// weights and black lobes are dropped).
-    #[inline(always)]
-    pub fn push(&mut self, lobe: Lobe, weight: f64) {
-        let selection = weight * lobe.albedo_estimate();
-        let usable = weight.is_finite() && selection > 0.0 && selection.is_finite();
-        if self.len == MAX_LOBES || !usable {
+    fn push_slot(&mut self, lobe: Lobe, weight: f64, tinted: bool, follows_rules: bool) {
+        let usable = weight > 0.0 && weight.is_finite() || self.angular.is_some();
+        if self.lobes.len() == MAX_LOBES || !usable {
             return;
         }
+        let i = self.lobes.len();
         let delta = lobe.is_delta();
-        self.reads_choice |= self.len > 0 || lobe.reads_choice();
+        self.reads_choice |= i > 0 || lobe.reads_choice();
         self.reads_direction |= !delta;
-        self.lobes.push(lobe);
-        self.weights[self.len] = weight;
-        self.selection[self.len] = selection;
-        self.total_selection += selection;
         if !delta {
-            self.smooth_selection += selection;
             self.smooth_lobes += 1;
-            match &self.lobes[self.len] {
-                Lobe::Lambert(l) => self.lambert_f += l.albedo * (weight * FRAC_1_PI),
-                _ => self.only_lambert = false,
+        }
+        if i == 0 {
+            self.only_lambert = true;
+        }
+        self.only_lambert &= delta || matches!(lobe, Lobe::Lambert(_));
+        self.weights[i] = weight;
+        self.tinted[i] = tinted;
+        self.follows_rules[i] = follows_rules;
+        self.lobes.push(lobe);
+        self.single_lambert = self.lobes.len() == 1
+            && self.tinted[0]
+            && self.angular.is_none()
+            && matches!(self.lobes[0], Lobe::Lambert(_));
+        self.fix_probabilities();
+    }
+
+    /// The probabilities when they do not depend on the hit.
+    fn fix_probabilities(&mut self) {
+        let fixed = self.angular.is_none()
+            && self.lobes.iter().zip(&self.tinted).all(|(lobe, &tinted)| {
+                tinted
+                    && !matches!(lobe, Lobe::Conductor(c) if c.fresnel == ConductorFresnel::Schlick)
+            });
+        self.fixed = fixed;
+        let total: f64 = self.weights[..self.lobes.len()].iter().sum();
+        self.fixed_smooth = 0.0;
+        for i in 0..self.lobes.len() {
+            self.fixed_probabilities[i] = if fixed { self.weights[i] / total } else { 0.0 };
+            if !self.lobes[i].is_delta() {
+                self.fixed_smooth += self.fixed_probabilities[i];
             }
         }
-        self.len += 1;
     }
 
-    /// The lobes and their weights.
-    pub fn lobes(&self) -> impl Iterator<Item = (&Lobe, f64)> {
-        self.lobes[..self.len]
-            .iter()
-            .zip(self.weights[..self.len].iter().copied())
+    pub fn len(&self) -> usize {
+        self.lobes.len()
     }
 
-    /// Whether it reflects nothing (no lobe): paths end here.
+    pub fn is_empty(&self) -> bool {
+        self.lobes.is_empty()
+    }
+}
+
+/// A lobe set at one hit: a handful of words (the set, the hit's colour,
+/// normal and side), everything else derived on demand, so that making one
+/// per vertex costs next to nothing.
+#[derive(Clone, Copy, Debug)]
+pub struct Bsdf<'a> {
+    set: &'a LobeSet,
+    color: Color,
+    normal: Vec3,
+    entering: bool,
+    rules: Rules,
+    /// The outgoing direction's cosine (for angle-dependent weights).
+    cos_o: f64,
+}
+
+/// The weights and probabilities of the lobes at one hit.
+struct Mixture {
+    weights: [f64; MAX_LOBES],
+    probabilities: [f64; MAX_LOBES],
+}
+
+impl<'a> Bsdf<'a> {
+    /// `set` at a hit: `color` its colour there (texture or constant),
+    /// `normal` the unit shading normal on the side of the outgoing
+    /// direction, `entering` whether that side is the outside, `cos_o` the
+    /// outgoing direction's cosine (for angle-dependent weights).
+    #[inline(always)]
+    pub fn new(
+        set: &'a LobeSet,
+        color: Color,
+        normal: &Vec3,
+        entering: bool,
+        cos_o: f64,
+        rules: Rules,
+    ) -> Bsdf<'a> {
+        Bsdf {
+            set,
+            color,
+            normal: *normal,
+            entering,
+            rules,
+            cos_o,
+        }
+    }
+
+    /// Runs `f` with the lobes' weights and probabilities: the set's when
+    /// they do not depend on the hit, else computed here.
+    #[inline]
+    fn with_mixture<R>(&self, f: impl FnOnce(&[f64; MAX_LOBES], &[f64; MAX_LOBES]) -> R) -> R {
+        if self.set.fixed {
+            return f(&self.set.weights, &self.set.fixed_probabilities);
+        }
+        let mixture = self.mixture();
+        f(&mixture.weights, &mixture.probabilities)
+    }
+
+    /// The weights and probabilities at this hit (lobes chosen by weight
+    /// times albedo estimate; all zero when it reflects nothing).
+    fn mixture(&self) -> Mixture {
+        let set = self.set;
+        let mut weights = set.weights;
+        if let Some(angular) = &set.angular {
+            let (d, s, r) = angular.weights(self.cos_o, self.entering, set.ior);
+            weights[..3].copy_from_slice(&[d, s, r]);
+        }
+        let mut probabilities = [0.0; MAX_LOBES];
+        let mut total = 0.0;
+        for (i, p) in probabilities.iter_mut().enumerate().take(set.lobes.len()) {
+            let selection = weights[i] * self.lobe(i).albedo_estimate();
+            *p = if selection.is_finite() {
+                selection.max(0.0)
+            } else {
+                0.0
+            };
+            total += *p;
+        }
+        if total > 0.0 {
+            for p in &mut probabilities {
+                *p /= total;
+            }
+        }
+        Mixture {
+            weights,
+            probabilities,
+        }
+    }
+
+    /// The tint lobe `i` has at this hit.
+    #[inline]
+    fn tint(&self, i: usize) -> Color {
+        if self.set.tinted[i] {
+            self.color
+        } else {
+            self.set.lobes[i].tint()
+        }
+    }
+
+    /// Lobe `i` at this hit: its tint, its side of a dielectric, the
+    /// rendering's Fresnel term and glass choice.
+    #[inline]
+    fn lobe(&self, i: usize) -> Lobe {
+        let mut lobe = self.set.lobes[i];
+        if self.set.tinted[i] {
+            lobe.set_tint(self.color);
+        }
+        let fresnel = self.set.follows_rules[i].then_some(self.rules.fresnel);
+        lobe.set_side(self.entering, fresnel, self.rules.glass);
+        lobe
+    }
+
+    /// Whether it reflects nothing: paths end here.
     #[inline]
     pub fn is_black(&self) -> bool {
-        self.len == 0
+        if self.set.fixed {
+            self.set.lobes.is_empty() || self.color.average() <= 0.0 || self.color.average().is_nan()
+        } else {
+            self.with_mixture(|_, p| p.iter().all(|&p| p <= 0.0))
+        }
     }
 
     /// The unit shading normal.
@@ -176,92 +286,128 @@ impl Bsdf {
         self.normal
     }
 
+    /// The tangent and bitangent of the shading frame.
     #[inline]
-    pub fn to_local(&self, v: &Vec3) -> Vec3 {
-        Vec3::new(
-            v.dot(&self.tangent),
-            v.dot(&self.bitangent),
-            v.dot(&self.normal),
-        )
+    fn frame(&self) -> (Vec3, Vec3) {
+        orthonormal_basis(&self.normal)
     }
 
-    #[inline]
+    pub fn to_local(&self, v: &Vec3) -> Vec3 {
+        let (tangent, bitangent) = self.frame();
+        Vec3::new(v.dot(&tangent), v.dot(&bitangent), v.dot(&self.normal))
+    }
+
     pub fn to_world(&self, v: &Vec3) -> Vec3 {
-        self.tangent * v.x + self.bitangent * v.y + self.normal * v.z
+        let (tangent, bitangent) = self.frame();
+        tangent * v.x + bitangent * v.y + self.normal * v.z
     }
 
     /// Whether [`Bsdf::sample`] reads `uc`: a choice between lobes, or
     /// between reflection and refraction.
     #[inline]
     pub fn reads_choice(&self) -> bool {
-        self.reads_choice
+        self.set.reads_choice
     }
 
     /// Whether [`Bsdf::sample`] reads `u`: a continuous lobe.
     #[inline]
     pub fn reads_direction(&self) -> bool {
-        self.reads_direction
-    }
-
-    /// The probability of choosing lobe `i`.
-    #[inline]
-    fn probability(&self, i: usize) -> f64 {
-        self.selection[i] / self.total_selection
+        self.set.reads_direction
     }
 
     /// The probability that [`Bsdf::sample`] chooses a continuous lobe.
     #[inline]
     pub fn smooth_probability(&self) -> f64 {
-        if self.smooth_selection == self.total_selection {
-            1.0
-        } else {
-            self.smooth_selection / self.total_selection
+        if self.set.fixed {
+            return self.set.fixed_smooth;
         }
+        self.with_mixture(|_, p| {
+            (0..self.set.lobes.len())
+                .filter(|&i| !self.set.lobes[i].is_delta())
+                .map(|i| p[i])
+                .sum()
+        })
     }
 
     /// `f` of the continuous part when it is made of Lambert lobes only
     /// (what a caustic connection needs); `None` when it is not, or empty.
     #[inline]
     pub fn lambert(&self) -> Option<Color> {
-        (self.only_lambert && self.smooth_lobes > 0).then_some(self.lambert_f)
+        let set = self.set;
+        if !set.only_lambert || set.smooth_lobes == 0 {
+            return None;
+        }
+        if set.single_lambert {
+            return Some(self.color * (set.weights[0] * FRAC_1_PI));
+        }
+        self.with_mixture(|weights, _| {
+            let mut f = Color::BLACK;
+            for (i, lobe) in set.lobes.iter().enumerate() {
+                if !lobe.is_delta() {
+                    f += self.tint(i) * weights[i];
+                }
+            }
+            Some(f * FRAC_1_PI)
+        })
     }
 
     /// A direction for `wo`: `uc` chooses the lobe (and, rescaled, between
     /// reflection and refraction), `u` the direction of a continuous lobe.
-    #[inline]
+    #[inline(always)]
     pub fn sample(&self, wo: &Vec3, uc: f64, u: [f64; 2]) -> Option<BsdfSample> {
-        let (index, uc) = self.choose(uc)?;
-        let lobe = &self.lobes[index];
-        let local_wo = match lobe {
-            // Lambert does not look at wo.
-            Lobe::Lambert(_) if self.smooth_lobes == 1 => Vec3::z(),
-            _ => self.to_local(wo),
-        };
+        if self.set.single_lambert {
+            // The common case: one tinted Lambert lobe.
+            let weight = self.color * self.set.weights[0];
+            let wi = lambert::cosine_hemisphere(u);
+            return Some(BsdfSample {
+                wi: self.to_world(&wi),
+                weight,
+                pdf: wi.z * FRAC_1_PI,
+                delta: false,
+            });
+        }
+        self.with_mixture(|weights, probabilities| {
+            self.sample_mixture(wo, uc, u, weights, probabilities)
+        })
+    }
+
+    #[inline(never)]
+    fn sample_mixture(
+        &self,
+        wo: &Vec3,
+        uc: f64,
+        u: [f64; 2],
+        weights: &[f64; MAX_LOBES],
+        probabilities: &[f64; MAX_LOBES],
+    ) -> Option<BsdfSample> {
+        let (index, uc) = choose(probabilities, self.set.lobes.len(), uc)?;
+        let lobe = self.lobe(index);
+        let local_wo = self.to_local(wo);
         let sample = lobe.sample(&local_wo, uc, u)?;
-        let probability = self.probability(index);
+        let probability = probabilities[index];
         let wi = self.to_world(&sample.wi);
-        if sample.delta || self.smooth_lobes == 1 {
+        if sample.delta || self.set.smooth_lobes == 1 {
             return Some(BsdfSample {
                 wi,
-                weight: sample.weight * (self.weights[index] / probability),
+                weight: sample.weight * (weights[index] / probability),
                 pdf: sample.pdf * probability,
                 delta: sample.delta,
             });
         }
         let mut f = Color::BLACK;
         let mut pdf = 0.0;
-        for i in 0..self.len {
-            let other = &self.lobes[i];
-            if other.is_delta() {
+        for i in 0..self.set.lobes.len() {
+            if self.set.lobes[i].is_delta() {
                 continue;
             }
-            f += other.eval(&local_wo, &sample.wi) * self.weights[i];
+            let other = self.lobe(i);
+            f += other.eval(&local_wo, &sample.wi) * weights[i];
             let density = if i == index {
                 sample.pdf
             } else {
                 other.pdf(&local_wo, &sample.wi)
             };
-            pdf += density * self.probability(i);
+            pdf += density * probabilities[i];
         }
         let weight = if pdf > 0.0 { f / pdf } else { Color::BLACK };
         Some(BsdfSample {
@@ -273,57 +419,80 @@ impl Bsdf {
     }
 
     /// `f(wo, wi) |cos_i|` of the continuous lobes, with their weights.
-    #[inline]
+    #[inline(always)]
     pub fn eval(&self, wo: &Vec3, wi: &Vec3) -> Color {
-        if self.only_lambert {
-            return self.lambert_f * self.normal.dot(wi).max(0.0);
+        if self.set.single_lambert {
+            let f = self.color * (self.set.weights[0] * FRAC_1_PI);
+            return f * self.normal.dot(wi).max(0.0);
+        }
+        self.eval_mixture(wo, wi)
+    }
+
+    #[inline(never)]
+    fn eval_mixture(&self, wo: &Vec3, wi: &Vec3) -> Color {
+        if self.set.only_lambert {
+            return self.lambert().unwrap_or(Color::BLACK) * self.normal.dot(wi).max(0.0);
         }
         let (wo, wi) = (self.to_local(wo), self.to_local(wi));
-        let mut f = Color::BLACK;
-        for (lobe, weight) in self.lobes() {
-            if !lobe.is_delta() {
-                f += lobe.eval(&wo, &wi) * weight;
+        self.with_mixture(|weights, _| {
+            let mut f = Color::BLACK;
+            for (i, weight) in weights.iter().enumerate().take(self.set.lobes.len()) {
+                if !self.set.lobes[i].is_delta() {
+                    f += self.lobe(i).eval(&wo, &wi) * *weight;
+                }
             }
-        }
-        f
+            f
+        })
     }
 
     /// The density (solid angle) with which [`Bsdf::sample`] gives `wi`,
     /// over its continuous lobes.
-    #[inline]
+    #[inline(always)]
     pub fn pdf(&self, wo: &Vec3, wi: &Vec3) -> f64 {
-        if self.only_lambert {
+        if self.set.single_lambert {
+            return self.normal.dot(wi).max(0.0) * FRAC_1_PI;
+        }
+        self.pdf_mixture(wo, wi)
+    }
+
+    #[inline(never)]
+    fn pdf_mixture(&self, wo: &Vec3, wi: &Vec3) -> f64 {
+        if self.set.only_lambert {
             let cosine = self.normal.dot(wi).max(0.0);
             return self.smooth_probability() * cosine * FRAC_1_PI;
         }
         let (wo, wi) = (self.to_local(wo), self.to_local(wi));
-        (0..self.len)
-            .filter(|&i| !self.lobes[i].is_delta())
-            .map(|i| self.lobes[i].pdf(&wo, &wi) * self.probability(i))
-            .sum()
+        self.with_mixture(|_, probabilities| {
+            (0..self.set.lobes.len())
+                .filter(|&i| !self.set.lobes[i].is_delta())
+                .map(|i| self.lobe(i).pdf(&wo, &wi) * probabilities[i])
+                .sum()
+        })
     }
+}
 
-    /// The lobe that `uc` chooses, and `uc` rescaled to [0, 1) within it.
-    #[inline]
-    fn choose(&self, uc: f64) -> Option<(usize, f64)> {
-        match self.len {
-            0 => None,
-            1 => Some((0, uc)),
-            _ => {
-                let target = uc * self.total_selection;
-                let mut start = 0.0;
-                for i in 0..self.len {
-                    let width = self.selection[i];
-                    if target < start + width || i + 1 == self.len {
-                        let rescaled = ((target - start) / width).clamp(0.0, ONE_BELOW);
-                        return Some((i, rescaled));
-                    }
-                    start += width;
-                }
-                None
-            }
-        }
+/// The lobe that `uc` chooses among the first `n` by their probabilities,
+/// and `uc` rescaled to [0, 1) within it.
+#[inline]
+fn choose(probabilities: &[f64; MAX_LOBES], n: usize, uc: f64) -> Option<(usize, f64)> {
+    if n == 1 {
+        return (probabilities[0] > 0.0).then_some((0, uc));
     }
+    let mut start = 0.0;
+    let mut last = None;
+    for (i, &width) in probabilities.iter().enumerate().take(n) {
+        if width <= 0.0 {
+            continue;
+        }
+        if uc < start + width {
+            let rescaled = ((uc - start) / width).clamp(0.0, ONE_BELOW);
+            return Some((i, rescaled));
+        }
+        start += width;
+        last = Some(i);
+    }
+    // Rounding: the probabilities summed to a little less than uc.
+    last.map(|i| (i, ONE_BELOW))
 }
 
 /// The largest f64 below 1.

@@ -14,7 +14,7 @@ use super::lambert::Lambert;
 use super::lobe::Lobe;
 use super::phong::Phong;
 use super::rough_dielectric::RoughDielectric;
-use super::{Bsdf, Lobe as L};
+use super::{Bsdf, GlassChoice, Lobe as L, LobeSet, Rules};
 use crate::color::Color;
 use crate::math::Vec3;
 use crate::rng::Rng;
@@ -401,23 +401,24 @@ fn white_furnace_of_a_rough_conductor() {
 #[test]
 fn a_mixture_samples_its_continuous_part_by_its_pdf() {
     let normal = Vec3::new(0.2, -0.3, 0.9).normalize();
-    let mut bsdf = Bsdf::new(&normal);
-    bsdf.push(
-        L::Lambert(Lambert {
-            albedo: Color::new(0.5, 0.4, 0.3),
-        }),
-        0.5,
-    );
-    bsdf.push(conductor(0.0), 0.2);
-    bsdf.push(rough_glass(0.4, true, DielectricFresnel::Exact), 0.3);
-    bsdf.push(
-        L::Phong(Phong {
-            color: Color::gray(0.6),
-            exponent: 20.0,
-        }),
-        1.0,
-    );
+    let mut set = LobeSet::default();
+    let lambert = L::Lambert(Lambert {
+        albedo: Color::new(0.5, 0.4, 0.3),
+    });
+    set.push(lambert, 0.5, false);
+    set.push(conductor(0.0), 0.2, false);
+    set.push(rough_glass(0.4, true, DielectricFresnel::Exact), 0.3, false);
+    let phong = L::Phong(Phong {
+        color: Color::gray(0.6),
+        exponent: 20.0,
+    });
+    set.push(phong, 1.0, false);
     let local_wo = Vec3::new(0.3, 0.2, 0.6).normalize();
+    let rules = Rules {
+        fresnel: DielectricFresnel::Exact,
+        glass: GlassChoice::Fresnel,
+    };
+    let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, local_wo.z, rules);
     let wo = bsdf.to_world(&local_wo);
     let p = chi_square(
         &|rng| {

@@ -73,7 +73,7 @@ mod tests {
     use super::*;
     use crate::bsdf::lambert::Lambert;
     use crate::bsdf::phong::Phong;
-    use crate::bsdf::{Bsdf, Lobe};
+    use crate::bsdf::{Bsdf, Lobe, LobeSet, Rules};
     use crate::math::Point3;
     use crate::scene::model::Material;
 
@@ -87,6 +87,7 @@ mod tests {
         let at = Shading {
             point: Point3::zeros(),
             material: &material,
+            material_index: 0,
             color: Color::WHITE,
             geometric: normal,
             normal,
@@ -99,23 +100,22 @@ mod tests {
         };
         let wo = Vec3::new(-0.6, 0.0, 0.8);
         let (kd, ks, n) = (0.5, 0.3, 20.0);
-        let mut bsdf = Bsdf::new(&normal);
-        bsdf.push(
-            Lobe::Lambert(Lambert {
-                albedo: Color::gray(kd),
-            }),
-            1.0,
-        );
+        let mut set = LobeSet::default();
+        let lambert = Lambert {
+            albedo: Color::gray(kd),
+        };
+        set.push(Lobe::Lambert(lambert), 1.0, false);
+        let rules = Rules::default();
+        let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, wo.z, rules);
         let diffuse_only = direct(&world, std::slice::from_ref(&light), &at, &bsdf, &wo);
         // albedo * color * cos, the framework's term.
         assert!((diffuse_only.r - kd * 2.0 * 0.8).abs() < 1e-12);
-        bsdf.push(
-            Lobe::Phong(Phong {
-                color: Color::gray(ks),
-                exponent: n,
-            }),
-            1.0,
-        );
+        let phong = Phong {
+            color: Color::gray(ks),
+            exponent: n,
+        };
+        set.push(Lobe::Phong(phong), 1.0, false);
+        let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, wo.z, rules);
         let with_highlight = direct(&world, &[light], &at, &bsdf, &wo);
         // wo is the mirror of the light direction: cos(alpha) = 1.
         let highlight = ks * (n + 2.0) / 2.0 * 0.8 * 2.0;

@@ -6,13 +6,13 @@ pub mod original;
 pub mod path;
 pub mod scatter;
 
-use crate::bsdf::DielectricFresnel;
+use crate::bsdf::{DielectricFresnel, LobeSet, lobe_sets};
 use crate::camera::Camera;
 use crate::color::Color;
 use crate::lights::Emitters;
 use crate::math::Ray;
 use crate::sampler::Sampler;
-use crate::scene::model::{Light, Scene};
+use crate::scene::model::{Light, Material, Scene};
 use crate::world::World;
 
 /// Which estimator renders the image.
@@ -119,6 +119,10 @@ pub struct SceneView<'a> {
     pub camera: Option<Camera>,
     /// How dielectrics reflect (the look's convention).
     pub fresnel: DielectricFresnel,
+    /// The lobes of every material, made once.
+    pub lobe_sets: Vec<LobeSet>,
+    /// The lobes of the default material (for a hit without one).
+    pub default_lobes: LobeSet,
 }
 
 impl<'a> SceneView<'a> {
@@ -133,6 +137,8 @@ impl<'a> SceneView<'a> {
             max_depth: original::MAX_DEPTH,
             camera: None,
             fresnel: DielectricFresnel::default(),
+            lobe_sets: lobe_sets(&scene.materials),
+            default_lobes: LobeSet::from_material(&Material::DEFAULT),
         }
     }
 }

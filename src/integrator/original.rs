@@ -7,7 +7,7 @@
 //! value, and costs one path per sample. Glass chooses between reflection
 //! and refraction by smallpt's roulette.
 
-use crate::bsdf::{Bsdf, GlassChoice};
+use crate::bsdf::GlassChoice;
 use crate::color::Color;
 use crate::math::Ray;
 use crate::sampler::Sampler;
@@ -23,7 +23,6 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
     let mut result = Color::BLACK;
     let mut throughput = Color::WHITE;
     let mut depth = 0;
-    let mut bsdf = Bsdf::new(&ray.direction);
     loop {
         let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
             if depth == 0 {
@@ -38,7 +37,7 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
             break;
         }
         let wo = -ray.direction;
-        bsdf_at(view, &at, &wo, GlassChoice::Smallpt, &mut bsdf);
+        let bsdf = bsdf_at(view, &at, &wo, GlassChoice::Smallpt);
         if bsdf.is_black() {
             break;
         }

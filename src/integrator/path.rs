@@ -114,7 +114,6 @@ pub fn radiance(
     } else {
         None
     };
-    let mut bsdf = Bsdf::new(&ray.direction);
     loop {
         let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
             if depth == 0 {
@@ -148,7 +147,7 @@ pub fn radiance(
             break;
         }
         let wo = -ray.direction;
-        bsdf_at(view, &at, &wo, GlassChoice::Fresnel, &mut bsdf);
+        let bsdf = bsdf_at(view, &at, &wo, GlassChoice::Fresnel);
         if bsdf.is_black() {
             break;
         }

@@ -10,22 +10,26 @@ use crate::shading::Shading;
 
 use super::{SceneView, lights};
 
-/// Makes `bsdf` the BSDF of `at` for light leaving towards `wo`, with the
-/// view's conventions and the estimator's way of choosing between
-/// reflection and refraction.
+/// The BSDF of `at` for light leaving towards `wo`, with the view's
+/// conventions and the estimator's way of choosing between reflection and
+/// refraction.
 #[inline(always)]
-pub fn bsdf_at(view: &SceneView, at: &Shading, wo: &Vec3, glass: GlassChoice, bsdf: &mut Bsdf) {
+pub fn bsdf_at<'v>(view: &'v SceneView, at: &Shading, wo: &Vec3, glass: GlassChoice) -> Bsdf<'v> {
     let rules = Rules {
         fresnel: view.fresnel,
         glass,
     };
-    at.build_bsdf(bsdf, wo, rules);
+    let set = view
+        .lobe_sets
+        .get(at.material_index)
+        .unwrap_or(&view.default_lobes);
+    at.bsdf(set, wo, rules)
 }
 
 /// A direction from `bsdf` for `wo`: the lobe choice and the direction are
 /// drawn from `sampler` only when the BSDF reads them (a perfect mirror
 /// reads nothing), so that the stratified dimensions go to real choices.
-#[inline]
+#[inline(always)]
 pub fn sample(bsdf: &Bsdf, wo: &Vec3, sampler: &mut Sampler) -> Option<BsdfSample> {
     let uc = if bsdf.reads_choice() {
         sampler.next_f64()

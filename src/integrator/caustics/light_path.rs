@@ -5,7 +5,7 @@
 use std::f64::consts::PI;
 
 use super::connect::splat_to_camera;
-use crate::bsdf::{Bsdf, GlassChoice};
+use crate::bsdf::GlassChoice;
 use crate::color::Color;
 use crate::integrator::scatter::{bsdf_at, emitter_choice, sample};
 use crate::integrator::{SceneView, Splats};
@@ -81,17 +81,22 @@ pub fn trace(
         time,
     );
     let mut chain = 0;
-    let mut bsdf = Bsdf::new(&direction);
     loop {
         let hit = view.world.intersect(&ray, 0.0, f64::INFINITY)?;
         let at = Shading::new(view.scene, &hit, &ray);
         let towards_light = -ray.direction;
-        bsdf_at(view, &at, &towards_light, GlassChoice::Fresnel, &mut bsdf);
+        let bsdf = bsdf_at(view, &at, &towards_light, GlassChoice::Fresnel);
         if bsdf.is_black() {
             return None;
         }
-        let scattered = sample(&bsdf, &towards_light, &mut sampler)?;
-        if !scattered.delta {
+        // A surface without delta lobes ends the subpath for sure: no
+        // direction is drawn for it.
+        let scattered = if bsdf.smooth_probability() >= 1.0 {
+            None
+        } else {
+            Some(sample(&bsdf, &towards_light, &mut sampler)?)
+        };
+        let Some(scattered) = scattered.filter(|s| s.delta) else {
             if chain == 0 {
                 // Direct light: next-event estimation's business.
                 return None;
@@ -120,7 +125,7 @@ pub fn trace(
                 splat_to_camera(view, camera, &y, lens, splats);
             }
             return Some(y);
-        }
+        };
         beta *= scattered.weight;
         if beta.is_black() {
             return None;
