@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench converge crosscheck crosscheck-glossy mitsuba-converge clean
+.PHONY: build render test lint bench converge crosscheck crosscheck-glossy mitsuba-converge gallery clean
 
 build:
 	$(CARGO) build --release
@@ -51,6 +51,13 @@ crosscheck-glossy: build
 # make mitsuba-converge SCENE=... [VARIANT=llvm_ad_rgb]
 mitsuba-converge:
 	$(VENV)/bin/python scripts/mitsuba_converge.py --scene $(SCENE) --variant $(VARIANT)
+
+# The side-by-side pictures of docs/gallery/ (ours next to the coursework
+# renderer's own image), with numpy and Pillow in the cross-check venv.
+gallery: build
+	python3 -m venv $(VENV)
+	$(VENV)/bin/pip install -q numpy pillow
+	$(VENV)/bin/python scripts/gallery.py
 
 clean:
 	$(CARGO) clean
