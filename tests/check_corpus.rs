@@ -87,3 +87,65 @@ fn content_facts() {
     });
     assert_eq!(largest, 100_000);
 }
+
+/// Fields that are read and not rendered: each must warn at its own line
+/// (the rule that nothing a scene says is dropped silently).
+const NOT_RENDERED: &[&str] = &[
+    "textureScale",
+    "textureLuminance",
+    "Func",
+    "nTexture",
+    "opacity",
+    "transparency",
+    "transparent",
+    "refractiveColor",
+    "transparentColor",
+    "ambientColor",
+    "enableReflect",
+    "enableRefract",
+    "cauchy",
+    "dispersion",
+    "mist",
+    "tStart",
+    "tEnd",
+    "time0",
+    "time1",
+    "falloff",
+    "lookat",
+    "SpotLight",
+    "Textures",
+    "Global",
+    "Objects",
+    "cubeMap",
+    "metallic",
+];
+
+#[test]
+fn fields_that_are_not_rendered_warn_at_their_line_in_every_corpus_scene() {
+    let Some(shared) = shared() else { return };
+    let mut checked = 0;
+    for (file, base) in corpus(&shared) {
+        let scene = load(&file, &base);
+        let text = std::fs::read_to_string(&file).expect("readable");
+        for (index, line) in text.lines().enumerate() {
+            let line_number = index as u32 + 1;
+            for token in line.split(|c: char| c.is_whitespace() || "{}[]".contains(c)) {
+                if !NOT_RENDERED.contains(&token) {
+                    continue;
+                }
+                checked += 1;
+                let warned = scene
+                    .warnings
+                    .iter()
+                    .any(|w| w.location.line == line_number && w.message.contains(token));
+                assert!(
+                    warned,
+                    "{}:{line_number}: '{token}' is not rendered and does not warn",
+                    file.display()
+                );
+            }
+        }
+    }
+    println!("{checked} fields that are not rendered, each warned at its line");
+    assert!(checked > 0, "the corpus has such fields (textureScale, mist, ...)");
+}
