@@ -147,5 +147,8 @@ fn fields_that_are_not_rendered_warn_at_their_line_in_every_corpus_scene() {
         }
     }
     println!("{checked} fields that are not rendered, each warned at its line");
-    assert!(checked > 0, "the corpus has such fields (textureScale, mist, ...)");
+    assert!(
+        checked > 0,
+        "the corpus has such fields (textureScale, mist, ...)"
+    );
 }

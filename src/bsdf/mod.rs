@@ -275,7 +275,9 @@ impl<'a> Bsdf<'a> {
     #[inline]
     pub fn is_black(&self) -> bool {
         if self.set.fixed {
-            self.set.lobes.is_empty() || self.color.average() <= 0.0 || self.color.average().is_nan()
+            self.set.lobes.is_empty()
+                || self.color.average() <= 0.0
+                || self.color.average().is_nan()
         } else {
             self.with_mixture(|_, p| p.iter().all(|&p| p <= 0.0))
         }
