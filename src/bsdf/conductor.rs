@@ -7,7 +7,7 @@
 
 use super::LobeSample;
 use super::fresnel::schlick;
-use super::microfacet::{Ggx, reflect};
+use super::microfacet::Ggx;
 use crate::color::Color;
 use crate::math::Vec3;
 use crate::scene::model::{ConductorFresnel, MIN_ROUGHNESS};
@@ -47,12 +47,9 @@ impl Conductor {
             return None;
         }
         let ggx = Ggx { alpha: self.alpha };
-        let h = ggx.sample_visible(wo, u);
-        let wi = reflect(wo, &h);
-        let cos_h = wo.dot(&h);
-        let pdf = ggx.visible_pdf(wo, &h) / (4.0 * cos_h);
+        let (wi, h, pdf) = ggx.sample_reflection(wo, u);
         let weight = if wi.z > 0.0 {
-            self.fresnel(cos_h) * ggx.g1(&wi, &h)
+            self.fresnel(wo.dot(&h)) * ggx.g1(&wi, &h)
         } else {
             Color::BLACK
         };
@@ -77,16 +74,9 @@ impl Conductor {
     }
 
     pub fn pdf(&self, wo: &Vec3, wi: &Vec3) -> f64 {
-        if self.is_delta() || wo.z <= 0.0 {
+        if self.is_delta() {
             return 0.0;
         }
-        let Some(h) = (wo + wi).try_normalize(1e-12) else {
-            return 0.0;
-        };
-        let cos_h = wo.dot(&h);
-        if cos_h <= 0.0 {
-            return 0.0;
-        }
-        Ggx { alpha: self.alpha }.visible_pdf(wo, &h) / (4.0 * cos_h)
+        Ggx { alpha: self.alpha }.reflection_pdf(wo, wi)
     }
 }

@@ -7,7 +7,7 @@
 //! `alpha` (a proposal, not its own distribution).
 
 use super::LobeSample;
-use super::microfacet::{Ggx, reflect};
+use super::microfacet::Ggx;
 use crate::color::Color;
 use crate::math::Vec3;
 
@@ -40,21 +40,8 @@ impl CookTorrance {
         if wo.z <= 0.0 {
             return None;
         }
-        let ggx = Ggx { alpha: self.alpha };
-        let h = ggx.sample_visible(wo, u);
-        let wi = reflect(wo, &h);
-        let pdf = ggx.visible_pdf(wo, &h) / (4.0 * wo.dot(&h));
-        let weight = if wi.z > 0.0 && pdf > 0.0 {
-            self.eval(wo, &wi) / pdf
-        } else {
-            Color::BLACK
-        };
-        Some(LobeSample {
-            wi,
-            weight,
-            pdf,
-            delta: false,
-        })
+        let (wi, _, pdf) = Ggx { alpha: self.alpha }.sample_reflection(wo, u);
+        Some(LobeSample::from_eval(wi, self.eval(wo, &wi), pdf))
     }
 
     pub fn eval(&self, wo: &Vec3, wi: &Vec3) -> Color {
@@ -65,16 +52,6 @@ impl CookTorrance {
     }
 
     pub fn pdf(&self, wo: &Vec3, wi: &Vec3) -> f64 {
-        if wo.z <= 0.0 {
-            return 0.0;
-        }
-        let Some(h) = (wo + wi).try_normalize(1e-12) else {
-            return 0.0;
-        };
-        let cos_h = wo.dot(&h);
-        if cos_h <= 0.0 {
-            return 0.0;
-        }
-        Ggx { alpha: self.alpha }.visible_pdf(wo, &h) / (4.0 * cos_h)
+        Ggx { alpha: self.alpha }.reflection_pdf(wo, wi)
     }
 }

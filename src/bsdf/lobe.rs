@@ -31,6 +31,24 @@ pub struct LobeSample {
     pub delta: bool,
 }
 
+impl LobeSample {
+    /// A direction of a continuous lobe with its `eval` and density: the
+    /// weight is their ratio (0 where either vanishes).
+    pub fn from_eval(wi: Vec3, eval: Color, pdf: f64) -> LobeSample {
+        let weight = if pdf > 0.0 && !eval.is_black() {
+            eval / pdf
+        } else {
+            Color::BLACK
+        };
+        LobeSample {
+            wi,
+            weight,
+            pdf,
+            delta: false,
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Lobe {
     Lambert(Lambert),

@@ -93,6 +93,31 @@ impl Ggx {
     }
 }
 
+impl Ggx {
+    /// A reflection off a microfacet visible from `wo` (`wo.z > 0`): the
+    /// direction, the microfacet normal and the density of the direction.
+    pub fn sample_reflection(&self, wo: &Vec3, u: [f64; 2]) -> (Vec3, Vec3, f64) {
+        let h = self.sample_visible(wo, u);
+        let wi = reflect(wo, &h);
+        (wi, h, self.visible_pdf(wo, &h) / (4.0 * wo.dot(&h)))
+    }
+
+    /// The density with which [`Ggx::sample_reflection`] gives `wi`.
+    pub fn reflection_pdf(&self, wo: &Vec3, wi: &Vec3) -> f64 {
+        if wo.z <= 0.0 {
+            return 0.0;
+        }
+        let Some(h) = (wo + wi).try_normalize(1e-12) else {
+            return 0.0;
+        };
+        let cos_h = wo.dot(&h);
+        if cos_h <= 0.0 {
+            return 0.0;
+        }
+        self.visible_pdf(wo, &h) / (4.0 * cos_h)
+    }
+}
+
 /// Mirror reflection of `w` about the microfacet normal `h`.
 #[inline]
 pub fn reflect(w: &Vec3, h: &Vec3) -> Vec3 {

@@ -74,18 +74,11 @@ impl RoughDielectric {
             Some(wi) if uc >= reflectance => wi,
             _ => reflect(wo, &h),
         };
-        let pdf = self.pdf(wo, &wi);
-        let weight = if pdf > 0.0 {
-            self.eval(wo, &wi) / pdf
-        } else {
-            Color::BLACK
-        };
-        Some(LobeSample {
+        Some(LobeSample::from_eval(
             wi,
-            weight,
-            pdf,
-            delta: false,
-        })
+            self.eval(wo, &wi),
+            self.pdf(wo, &wi),
+        ))
     }
 
     pub fn eval(&self, wo: &Vec3, wi: &Vec3) -> Color {
