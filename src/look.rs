@@ -1,38 +1,211 @@
 //! Looks: the conventions by which a renderer turns a scene into pixels,
-//! as data. A look is chosen per render (`--look NAME`); the rendering
-//! follows its row.
+//! as data, one row per renderer (`../shared/docs/looks.md` has the facts
+//! each row comes from, with their source lines). A look is chosen for each
+//! scene by its dialect and the fingerprints that tell renderers of one
+//! dialect apart ([`Look::detect`]), or by `--look NAME`; the render summary
+//! and `check` say which and why.
 //!
-//! | look | what it is |
-//! |---|---|
-//! | `original` | the renderer this project ports (`docs/original-renderer.md`): Schlick's Fresnel term for glass |
-//! | `physical` | the project's physically based rendering of the same scene: exact Fresnel equations |
+//! | look | renderer | estimator | depth | a ray that misses | PA1 lights | Phong lobes | glass |
+//! |---|---|---|---|---|---|---|---|
+//! | `original` | the ported renderer (canonical dialect) | path tracing | 5 | background for camera rays | when the scene has no emitter | yes | Schlick |
+//! | `physical` | this project's physically based rendering | path tracing | 5 | background, weighted, at every depth | when the scene has no emitter | yes | exact Fresnel |
+//! | `pa1` | the course framework's ray caster (Achazwl, aliezlo `rc`, Cambrian's first renders) | ray casting: Phong per light, no shadows, pixel centres | 1 | background | always | the framework's | none |
+//! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick |
+//! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing | 15 hits | background, unweighted, at every depth | never | no | Schlick |
+//! | `osb` | one-step-beh1nd | path tracing | unlimited (roulette) | black | never | no | reflect with 0.25 + R/2, unweighted |
+//! | `ylc` | ylc2001 | path tracing | unlimited (roulette) | background, unweighted | never | no | Schlick |
+//! | `yzc` | yuzc19 | path tracing | 11 | background, weighted | never | no | Schlick |
+//!
+//! "Unlimited" depths are 64 scattering vertices: Russian roulette ends
+//! paths long before, as it did in those renderers, without bias.
 
 use crate::bsdf::DielectricFresnel;
+use crate::scene::model::{Dialect, Scene};
+
+/// How radiance is estimated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Estimator {
+    /// Path tracing (the `--integrator` chooses the path integrator or the
+    /// original estimator: the same expected image).
+    PathTracing,
+    /// The course framework's ray casting: at the first hit, for every point
+    /// and directional light, `kd max(0, n.l) + ks max(0, v.r)^shininess`,
+    /// no shadows, nothing else.
+    RayCasting,
+}
+
+/// What a ray that hits nothing brings back.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Miss {
+    /// The background for camera rays, black after a bounce (the original).
+    CameraBackground,
+    /// The background at every depth, times the path's throughput (an
+    /// environment light).
+    Weighted,
+    /// The background at every depth, *not* times the throughput (W-Solaris
+    /// and its family add it raw: diffuse objects glow with it).
+    Unweighted,
+    /// Black at every depth, camera rays included.
+    Black,
+}
+
+/// When the point and directional lights of a scene are added.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PointLights {
+    /// Only in scenes without emissive materials (the PA1 scenes).
+    WithoutEmitters,
+    /// Never: light comes from emissive materials only.
+    Never,
+}
+
+/// Where in a pixel camera rays go.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelSampling {
+    /// The original's 2x2 sub-pixels with tent filters.
+    Tent,
+    /// One ray through the pixel centre.
+    Centre,
+}
 
 /// One look's conventions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Look {
     pub name: &'static str,
+    /// Whose renderer it is.
+    pub renderer: &'static str,
+    pub estimator: Estimator,
+    /// Scattering vertices before a path ends (`--max-depth` overrides it).
+    pub max_depth: u32,
+    pub miss: Miss,
+    pub point_lights: PointLights,
+    /// Whether PA1's `specularColor`/`shininess` become a Phong lobe of the
+    /// path traced BSDF (most coursework path tracers ignore them).
+    pub phong_lobes: bool,
     /// What dielectrics reflect.
     pub fresnel: DielectricFresnel,
+    pub pixels: PixelSampling,
 }
+
+/// Scattering vertices that stand for "no limit": Russian roulette ends
+/// paths long before.
+const UNLIMITED: u32 = 64;
 
 impl Look {
     pub const ORIGINAL: Look = Look {
         name: "original",
+        renderer: "the ported renderer",
+        estimator: Estimator::PathTracing,
+        max_depth: 5,
+        miss: Miss::CameraBackground,
+        point_lights: PointLights::WithoutEmitters,
+        phong_lobes: true,
         fresnel: DielectricFresnel::Schlick,
+        pixels: PixelSampling::Tent,
     };
 
     pub const PHYSICAL: Look = Look {
         name: "physical",
+        renderer: "this project's physically based rendering",
+        miss: Miss::Weighted,
         fresnel: DielectricFresnel::Exact,
+        ..Look::ORIGINAL
+    };
+
+    pub const PA1: Look = Look {
+        name: "pa1",
+        renderer: "the course framework's ray caster",
+        estimator: Estimator::RayCasting,
+        max_depth: 1,
+        miss: Miss::CameraBackground,
+        pixels: PixelSampling::Centre,
+        ..Look::ORIGINAL
+    };
+
+    pub const CAMBRIAN: Look = Look {
+        name: "cambrian",
+        renderer: "Cambrian-yzt/PathTracer",
+        max_depth: UNLIMITED,
+        miss: Miss::Black,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        ..Look::ORIGINAL
+    };
+
+    pub const WSO: Look = Look {
+        name: "wso",
+        renderer: "W-Solaris/computer-graphics (the D3 family's path tracer)",
+        max_depth: 14,
+        miss: Miss::Unweighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        ..Look::ORIGINAL
+    };
+
+    pub const OSB: Look = Look {
+        name: "osb",
+        renderer: "one-step-beh1nd/THU2024Spring-CG-Final",
+        max_depth: UNLIMITED,
+        miss: Miss::Black,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        fresnel: DielectricFresnel::SmallptUnweighted,
+        ..Look::ORIGINAL
+    };
+
+    pub const YLC: Look = Look {
+        name: "ylc",
+        renderer: "ylc2001/Computational-Graphics-Final-Project",
+        max_depth: UNLIMITED,
+        miss: Miss::Unweighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        ..Look::ORIGINAL
+    };
+
+    pub const YZC: Look = Look {
+        name: "yzc",
+        renderer: "yuzc19/Ray-tracing-engine",
+        max_depth: 11,
+        miss: Miss::Weighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        ..Look::ORIGINAL
     };
 
     /// Every look, by name.
-    pub const ALL: [Look; 2] = [Look::ORIGINAL, Look::PHYSICAL];
+    pub const ALL: [Look; 8] = [
+        Look::ORIGINAL,
+        Look::PHYSICAL,
+        Look::PA1,
+        Look::CAMBRIAN,
+        Look::WSO,
+        Look::OSB,
+        Look::YLC,
+        Look::YZC,
+    ];
 
     pub fn from_name(name: &str) -> Option<Look> {
         Look::ALL.into_iter().find(|look| look.name == name)
+    }
+
+    /// The look of the renderer that most likely wrote `scene`, and why.
+    pub fn detect(scene: &Scene) -> (Look, String) {
+        let why = |what: &str| format!("{} dialect{what}", scene.dialect.name());
+        match scene.dialect {
+            Dialect::Pa1 => (Look::PA1, why(": the course framework's ray caster")),
+            Dialect::Cambrian => (Look::CAMBRIAN, why("")),
+            Dialect::TypeVector => {
+                let has = |word: &str| scene.fingerprints.iter().any(|w| w == word);
+                if has("DepthCamera") || has("glossy") || has("speed") {
+                    (Look::OSB, why(" with osb's DepthCamera, glossy or speed"))
+                } else if has("DiskLights") || has("focal") {
+                    (Look::YLC, why(" with ylc's DiskLights or focal"))
+                } else {
+                    (Look::WSO, why(": the family's path tracer (W-Solaris's)"))
+                }
+            }
+            _ => (Look::ORIGINAL, why(": no look of its own yet")),
+        }
     }
 }
 

@@ -12,7 +12,7 @@ use crate::camera::Camera;
 use crate::film::{Film, SplatSums};
 use crate::image_io::Image;
 use crate::integrator::{CameraSample, Integrator, SceneView, Splats};
-use crate::look::Look;
+use crate::look::{Look, PixelSampling};
 use crate::sampler::{Sampler, SamplerKind};
 use crate::scene::model::{Object, Scene};
 use crate::subpixel::film_position;
@@ -89,11 +89,10 @@ pub fn render_into(
     let width = film.width;
     let height = film.height;
     let camera = Camera::new(&scene.camera, width as u32, height as u32);
-    let mut view = SceneView::new(scene, world);
+    let mut view = SceneView::with_look(scene, world, settings.look);
     view.max_depth = settings.max_depth;
     view.camera = Some(camera.clone());
     view.light_paths &= settings.light_paths;
-    view.fresnel = settings.look.fresnel;
     // Light tracing's sums, only where light subpaths run.
     let splat_sums = SplatSums::new(if view.light_paths { width * height } else { 0 });
     let plan = SamplingPlan::for_scene(scene);
@@ -184,7 +183,10 @@ fn trace_sample(
         at.sample as u64,
         settings.seed,
     );
-    let (film_x, film_y) = film_position(at.x, at.y, at.sample % 4, sampler.next_2d());
+    let (film_x, film_y) = match settings.look.pixels {
+        PixelSampling::Tent => film_position(at.x, at.y, at.sample % 4, sampler.next_2d()),
+        PixelSampling::Centre => (at.x as f64 + 0.5, at.y as f64 + 0.5),
+    };
     let lens = if plan.lens {
         sampler.next_2d()
     } else {

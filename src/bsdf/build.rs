@@ -41,15 +41,19 @@ pub struct Rules {
     pub glass: GlassChoice,
 }
 
-/// The lobe set of every material, in order.
-pub fn lobe_sets(materials: &[Material]) -> Vec<LobeSet> {
-    materials.iter().map(LobeSet::from_material).collect()
+/// The lobe set of every material, in order; `phong`: whether Phong lobes
+/// (PA1's `specularColor`/`shininess`) are rendered (the look decides).
+pub fn lobe_sets(materials: &[Material], phong: bool) -> Vec<LobeSet> {
+    materials
+        .iter()
+        .map(|m| LobeSet::from_material(m, phong))
+        .collect()
 }
 
 impl LobeSet {
     /// The lobes of `material` (see the module documentation); the tints
     /// of the weighted lobes are the hit's colour.
-    pub fn from_material(material: &Material) -> LobeSet {
+    pub fn from_material(material: &Material, phong: bool) -> LobeSet {
         let mut set = LobeSet {
             ior: material.ior,
             angular: material.angular_weights,
@@ -107,7 +111,7 @@ impl LobeSet {
             // cav's glass only refracts: its reflection is the conductor.
             set.push_slot(lobe, refract, true, !angular);
         }
-        if let Some(phong) = material.phong {
+        if let Some(phong) = material.phong.filter(|_| phong) {
             let lobe = Phong {
                 color: phong.color,
                 exponent: phong.exponent.max(0.0),

@@ -14,6 +14,9 @@ pub enum DielectricFresnel {
     /// No reflection at all (cav's glass, whose reflection is a separate,
     /// angle-weighted lobe): only total internal reflection reflects.
     None,
+    /// smallpt's roulette probability `0.25 + R / 2` (Schlick's R) used as
+    /// the reflectance itself, unweighted (osb's glass).
+    SmallptUnweighted,
 }
 
 /// Reflectance of a dielectric boundary for light arriving at `cos_i`
@@ -39,6 +42,9 @@ pub fn dielectric(model: DielectricFresnel, cos_i: f64, eta_i: f64, eta_t: f64) 
             0.5 * (parallel * parallel + perpendicular * perpendicular)
         }
         DielectricFresnel::None => 0.0,
+        DielectricFresnel::SmallptUnweighted => {
+            0.25 + 0.5 * dielectric(DielectricFresnel::Schlick, cos_i, eta_i, eta_t)
+        }
     }
 }
 

@@ -19,7 +19,7 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 
 use pathtracer::integrator::Integrator;
-use pathtracer::look::Look;
+use pathtracer::look::{Estimator, Look, PixelSampling};
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Dialect, Scene};
@@ -67,14 +67,16 @@ pub struct SamplingOptions {
     /// `independent` (one random generator per pixel sample).
     #[arg(long, default_value = "sobol", value_parser = parse_sampler)]
     pub sampler: SamplerKind,
-    /// Estimator: `path` (next-event estimation with MIS, the default) or
-    /// `original` (the original renderer's estimator). Both have the same
-    /// expected image.
-    #[arg(long, default_value = "path", value_parser = parse_integrator)]
-    pub integrator: Integrator,
-    /// Scattering vertices before a path ends (the original: 5).
-    #[arg(long, default_value_t = 5)]
-    pub max_depth: u32,
+    /// Estimator: `path` (next-event estimation with MIS), `original` (the
+    /// original renderer's estimator, the same expected image) or `raycast`
+    /// (the course framework's ray casting). Default: the look's (path, or
+    /// raycast for the pa1 look).
+    #[arg(long, value_parser = parse_integrator)]
+    pub integrator: Option<Integrator>,
+    /// Scattering vertices before a path ends (default: the look's; the
+    /// original: 5).
+    #[arg(long)]
+    pub max_depth: Option<u32>,
     /// BIASED: scale every sample down to at most this luminance, trading
     /// energy for the absence of fireflies. Off by default.
     #[arg(long)]
@@ -84,29 +86,51 @@ pub struct SamplingOptions {
     /// expected image, noisier; for comparisons.
     #[arg(long)]
     pub no_light_paths: bool,
-    /// The conventions of the rendering: `original` (the ported renderer's,
-    /// the default) or `physical` (exact Fresnel equations).
-    #[arg(long, default_value = "original", value_parser = parse_look)]
-    pub look: Look,
+    /// The conventions of the rendering: one coursework renderer's
+    /// (`pa1`, `cambrian`, `wso`, `osb`, `ylc`, `yzc`), the ported renderer's
+    /// (`original`) or this project's physically based one (`physical`).
+    /// Default: the look of the renderer that wrote the scene, by its
+    /// dialect and fingerprints.
+    #[arg(long, value_parser = parse_look)]
+    pub look: Option<Look>,
     #[command(flatten)]
     pub scene: SceneOptions,
 }
 
 impl SamplingOptions {
+    /// The look, and why it was chosen.
+    pub fn look(&self, scene: &Scene) -> (Look, String) {
+        match self.look {
+            Some(look) => (look, "chosen by --look".to_string()),
+            None => Look::detect(scene),
+        }
+    }
+
     pub fn settings(&self, scene: &Scene, spp: u32, progress: bool) -> RenderSettings {
+        let (look, _) = self.look(scene);
+        let integrator = self.integrator.unwrap_or(match look.estimator {
+            Estimator::PathTracing => Integrator::Path,
+            Estimator::RayCasting => Integrator::RayCast,
+        });
+        // Ray casting through pixel centres is deterministic: one sample.
+        let spp = if integrator == Integrator::RayCast && look.pixels == PixelSampling::Centre {
+            1
+        } else {
+            spp
+        };
         RenderSettings {
             width: self.width.unwrap_or(scene.camera.width),
             height: self.height.unwrap_or(scene.camera.height),
             spp,
             seed: self.seed,
             threads: self.threads.map(|t| t as usize),
-            integrator: self.integrator,
-            max_depth: self.max_depth,
+            integrator,
+            max_depth: self.max_depth.unwrap_or(look.max_depth),
             sampler: self.sampler,
             progress,
             clamp: self.clamp,
             light_paths: !self.no_light_paths,
-            look: self.look,
+            look,
         }
     }
 }

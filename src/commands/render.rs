@@ -99,9 +99,12 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         );
         write_atomically(&sidecar, json.as_bytes())?;
     }
+    let (look, why) = args.sampling.look(&scene);
     say!(
-        "{}: {}x{}, {:.1} spp spent, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped, {} fireflies{}",
+        "{}: look {} ({why}), {} integrator, {}x{}, {:.1} spp spent, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped, {} fireflies{}",
         output.display(),
+        look.name,
+        settings.integrator.name(),
         settings.width,
         settings.height,
         stats.samples as f64 / pixels as f64,

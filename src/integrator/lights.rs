@@ -11,13 +11,17 @@ use std::f64::consts::PI;
 
 use crate::bsdf::Bsdf;
 use crate::color::Color;
+use crate::look::PointLights;
 use crate::math::{Ray, Vec3};
 use crate::scene::model::{Light, Scene};
 use crate::shading::Shading;
 use crate::world::World;
 
 /// The lights that are sampled by shadow rays (see `SceneView::direct_lights`).
-pub fn direct_lights(scene: &Scene) -> &[Light] {
+pub fn direct_lights(scene: &Scene, rule: PointLights) -> &[Light] {
+    if rule == PointLights::Never {
+        return &[];
+    }
     let mut has_emitter = false;
     scene.root.for_each_leaf(&mut |leaf| {
         for m in leaf.materials().filter_map(|i| scene.materials.get(i)) {

@@ -4,12 +4,14 @@ pub mod caustics;
 pub mod lights;
 pub mod original;
 pub mod path;
+pub mod raycast;
 pub mod scatter;
 
-use crate::bsdf::{DielectricFresnel, LobeSet, lobe_sets};
+use crate::bsdf::{LobeSet, lobe_sets};
 use crate::camera::Camera;
 use crate::color::Color;
 use crate::lights::Emitters;
+use crate::look::Look;
 use crate::math::Ray;
 use crate::sampler::Sampler;
 use crate::scene::model::{Light, Material, Scene};
@@ -24,16 +26,20 @@ pub enum Integrator {
     /// importance sampling at diffuse vertices (see [`path`]).
     #[default]
     Path,
+    /// The course framework's ray casting (see [`raycast`]): the PA1 look's
+    /// estimator.
+    RayCast,
 }
 
 impl Integrator {
-    pub const ALL: [Integrator; 2] = [Integrator::Path, Integrator::Original];
+    pub const ALL: [Integrator; 3] = [Integrator::Path, Integrator::Original, Integrator::RayCast];
 
     /// The command-line name.
     pub fn name(self) -> &'static str {
         match self {
             Integrator::Original => "original",
             Integrator::Path => "path",
+            Integrator::RayCast => "raycast",
         }
     }
 
@@ -55,6 +61,7 @@ impl Integrator {
         match self {
             Integrator::Original => original::radiance(view, ray, sampler),
             Integrator::Path => path::radiance(view, ray, sample, sampler, splats),
+            Integrator::RayCast => raycast::radiance(view, ray),
         }
     }
 }
@@ -117,8 +124,8 @@ pub struct SceneView<'a> {
     /// The camera of the film being rendered, which light subpaths connect
     /// to (`None`: no light tracing, as for paths traced outside a render).
     pub camera: Option<Camera>,
-    /// How dielectrics reflect (the look's convention).
-    pub fresnel: DielectricFresnel,
+    /// The conventions of the rendering.
+    pub look: Look,
     /// The lobes of every material, made once.
     pub lobe_sets: Vec<LobeSet>,
     /// The lobes of the default material (for a hit without one).
@@ -126,19 +133,24 @@ pub struct SceneView<'a> {
 }
 
 impl<'a> SceneView<'a> {
+    /// The view of `scene` in the original look.
     pub fn new(scene: &'a Scene, world: &'a World) -> SceneView<'a> {
+        SceneView::with_look(scene, world, Look::default())
+    }
+
+    pub fn with_look(scene: &'a Scene, world: &'a World, look: Look) -> SceneView<'a> {
         let mut emitters = Emitters::build(scene, world);
         SceneView {
             scene,
             world,
-            direct_lights: lights::direct_lights(scene),
+            direct_lights: lights::direct_lights(scene, look.point_lights),
             light_paths: caustics::prepare(scene, world, &mut emitters),
             emitters,
             max_depth: original::MAX_DEPTH,
             camera: None,
-            fresnel: DielectricFresnel::default(),
-            lobe_sets: lobe_sets(&scene.materials),
-            default_lobes: LobeSet::from_material(&Material::DEFAULT),
+            look,
+            lobe_sets: lobe_sets(&scene.materials, look.phong_lobes),
+            default_lobes: LobeSet::from_material(&Material::DEFAULT, look.phong_lobes),
         }
     }
 }

@@ -14,7 +14,7 @@ use crate::sampler::Sampler;
 use crate::shading::Shading;
 
 use super::SceneView;
-use super::scatter::{bsdf_at, pa1_lights, sample};
+use super::scatter::{bsdf_at, miss, pa1_lights, sample};
 
 /// Scattering vertices of the original before a path ends.
 pub const MAX_DEPTH: u32 = 5;
@@ -25,9 +25,7 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
     let mut depth = 0;
     loop {
         let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
-            if depth == 0 {
-                result += throughput * view.scene.background;
-            }
+            result += miss(view, depth, throughput);
             break;
         };
         let at = Shading::new(view.scene, &hit, &ray);

@@ -36,7 +36,7 @@ use crate::sampler::Sampler;
 use crate::shading::Shading;
 
 use super::caustics::{self, CausticVertex};
-use super::scatter::{bsdf_at, emitter_choice, pa1_lights, sample};
+use super::scatter::{bsdf_at, emitter_choice, miss, pa1_lights, sample};
 use super::{CameraSample, SceneView, Splats};
 
 /// Scattering vertices after which Russian roulette may end a path. Within
@@ -116,9 +116,7 @@ pub fn radiance(
     };
     loop {
         let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
-            if depth == 0 {
-                result += throughput * view.scene.background;
-            }
+            result += miss(view, depth, throughput);
             break;
         };
         let at = Shading::new(view.scene, &hit, &ray);

@@ -4,6 +4,7 @@
 
 use crate::bsdf::{Bsdf, BsdfSample, GlassChoice, Rules};
 use crate::color::Color;
+use crate::look::Miss;
 use crate::math::Vec3;
 use crate::sampler::Sampler;
 use crate::shading::Shading;
@@ -16,7 +17,7 @@ use super::{SceneView, lights};
 #[inline(always)]
 pub fn bsdf_at<'v>(view: &'v SceneView, at: &Shading, wo: &Vec3, glass: GlassChoice) -> Bsdf<'v> {
     let rules = Rules {
-        fresnel: view.fresnel,
+        fresnel: view.look.fresnel,
         glass,
     };
     let set = view
@@ -61,5 +62,18 @@ pub fn pa1_lights(view: &SceneView, at: &Shading, bsdf: &Bsdf, wo: &Vec3) -> Col
         Color::BLACK
     } else {
         lights::direct(view.world, view.direct_lights, at, bsdf, wo)
+    }
+}
+
+/// What a ray that finds nothing adds, after `depth` scattering vertices
+/// with `throughput` (the look's rule).
+#[inline]
+pub fn miss(view: &SceneView, depth: u32, throughput: Color) -> Color {
+    let background = view.scene.background;
+    match view.look.miss {
+        Miss::CameraBackground if depth == 0 => throughput * background,
+        Miss::CameraBackground | Miss::Black => Color::BLACK,
+        Miss::Weighted => throughput * background,
+        Miss::Unweighted => background,
     }
 }

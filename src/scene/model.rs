@@ -23,6 +23,9 @@ pub struct Scene {
     /// The object tree: groups and transforms over shapes.
     pub root: Object,
     pub dialect: Dialect,
+    /// Words of the file that tell renderers of one dialect apart (see
+    /// `look::Look::detect`).
+    pub fingerprints: Vec<String>,
     /// Non-fatal problems found while reading (unknown fields, count mismatches...).
     pub warnings: Vec<Diagnostic>,
     /// What reading the file cost (for `--stats`).
@@ -52,6 +55,7 @@ impl Scene {
             lights: Vec::new(),
             root,
             dialect: Dialect::Canonical,
+            fingerprints: Vec::new(),
             warnings: Vec::new(),
             load: LoadStats::default(),
         }

@@ -1,5 +1,6 @@
 //! A one-paragraph description of a built scene, for `pathtracer check`.
 
+use crate::look::Look;
 use crate::scene::model::{FovAxis, Object, Scene};
 
 /// Dialect, camera, resolution and counts of a scene, in one paragraph.
@@ -28,11 +29,13 @@ pub fn summary(scene: &Scene) -> String {
     } else {
         String::new()
     };
+    let (look, why) = Look::detect(scene);
     let text = format!(
-        "Dialect {}. Camera at ({}, {}, {}) looking along ({}, {}, {}), {fov}{lens}; \
+        "Dialect {}, look {} ({why}). Camera at ({}, {}, {}) looking along ({}, {}, {}), {fov}{lens}; \
          {}x{} pixels. {} materials, {objects} objects ({triangles} triangles), \
          {} textures, {} lights, {} warnings.",
         scene.dialect.name(),
+        look.name,
         c.center.x,
         c.center.y,
         c.center.z,

@@ -55,11 +55,32 @@ const CYF: [&str; 6] = [
     "aperture",
 ];
 
+/// Words that tell renderers of one dialect apart (see `look::Look::detect`).
+const LOOK_FINGERPRINTS: [&str; 5] = ["DepthCamera", "glossy", "speed", "DiskLights", "focal"];
+
+/// The words of [`LOOK_FINGERPRINTS`] that the file uses.
+pub fn look_fingerprints(document: &Document) -> Vec<String> {
+    let mut found = Vec::new();
+    document.for_each_word(&mut |word, _, _| {
+        if LOOK_FINGERPRINTS.contains(&word) && !found.iter().any(|f: &String| f == word) {
+            found.push(word.to_string());
+        }
+    });
+    found
+}
+
 /// Detects the dialect of a parsed file.
 pub fn detect_dialect(document: &Document) -> Dialect {
     let mut words: HashSet<&str> = HashSet::new();
     let mut type_vector = false;
     document.for_each_word(&mut |word, items, index| {
+        // A material written with `color` is not the PA1 framework's, which
+        // knows only `diffuseColor`: the D3 family (W-Solaris and kin).
+        if matches!(word, "Material" | "PhongMaterial")
+            && let Some(ItemKind::Block(block)) = items.get(index).map(|i| &i.kind)
+        {
+            type_vector |= block.items.iter().any(|i| i.word() == Some("color"));
+        }
         if word == "type" {
             let numbers = items
                 .iter()
@@ -127,6 +148,10 @@ mod tests {
             Dialect::Pa1
         );
         assert_eq!(detect("Material { type 1 0 0 }"), Dialect::TypeVector);
+        assert_eq!(
+            detect("Materials { Material { color 1 1 1 specularColor 1 1 1 } }"),
+            Dialect::TypeVector
+        );
         assert_eq!(detect("Material { refr 1.5 }"), Dialect::TypeVector);
         assert_eq!(detect("Material { specularRate 1 }"), Dialect::Canonical);
         assert_eq!(

@@ -25,7 +25,7 @@ use crate::scene::error::{Diagnostic, Location, SceneError};
 use crate::scene::model::{Material, Object, Scene};
 
 pub use cursor::Cursor;
-pub use dialect::detect_dialect;
+pub use dialect::{detect_dialect, look_fingerprints};
 
 /// State shared by every build step: where we are, what went wrong so far.
 pub struct Context<'a> {
@@ -205,6 +205,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         lights,
         root,
         dialect,
+        fingerprints: look_fingerprints(document),
         warnings: context.warnings,
         load,
     })
