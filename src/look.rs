@@ -11,7 +11,7 @@
 //! | `physical` | this project's physically based rendering | path tracing | 5 | background, weighted, at every depth | when the scene has no emitter | yes | exact Fresnel |
 //! | `pa1` | the course framework's ray caster (Achazwl, aliezlo `rc`, Cambrian's first renders) | ray casting: Phong per light, no shadows, pixel centres | 1 | background | always | the framework's | none |
 //! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick |
-//! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing | 15 hits | background, unweighted, at every depth | never | no | Schlick |
+//! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing | 15 hits | background, unweighted, at every depth | never | no | Schlick; planes one-sided |
 //! | `osb` | one-step-beh1nd | path tracing | unlimited (roulette) | black | never | no | reflect with 0.25 + R/2, unweighted |
 //! | `ylc` | ylc2001 | path tracing | unlimited (roulette) | background, unweighted | never | no | Schlick |
 //! | `yzc` | yuzc19 | path tracing | 11 | background, weighted | never | no | Schlick |
@@ -84,6 +84,9 @@ pub struct Look {
     /// What dielectrics reflect.
     pub fresnel: DielectricFresnel,
     pub pixels: PixelSampling,
+    /// Whether planes are hit from the front only (so that light passes
+    /// through them from behind).
+    pub one_sided_planes: bool,
 }
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -101,6 +104,7 @@ impl Look {
         phong_lobes: true,
         fresnel: DielectricFresnel::Schlick,
         pixels: PixelSampling::Tent,
+        one_sided_planes: false,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -138,6 +142,7 @@ impl Look {
         miss: Miss::Unweighted,
         point_lights: PointLights::Never,
         phong_lobes: false,
+        one_sided_planes: true,
         ..Look::ORIGINAL
     };
 
@@ -212,5 +217,44 @@ impl Look {
 impl Default for Look {
     fn default() -> Self {
         Look::ORIGINAL
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::build::build_text;
+
+    fn look_of(text: &str) -> &'static str {
+        let scene = build_text(text).expect("builds");
+        Look::detect(&scene).0.name
+    }
+
+    const CAMERA: &str =
+        "PerspectiveCamera { center 0 0 5 direction 0 0 -1 up 0 1 0 angle 30 width 4 height 4 }\n";
+
+    #[test]
+    fn every_look_has_a_name_of_its_own() {
+        for look in Look::ALL {
+            assert_eq!(Look::from_name(look.name), Some(look));
+        }
+        assert_eq!(Look::from_name("nope"), None);
+    }
+
+    #[test]
+    fn looks_are_detected_by_dialect_and_fingerprints() {
+        let pa1 = "Materials { Material { diffuseColor 1 0 0 specularColor 1 1 1 shininess 20 } }";
+        assert_eq!(look_of(&format!("{CAMERA}{pa1}")), "pa1");
+        let cambrian = "Materials { PhongMaterial { type DIFF color 1 1 1 refractive_rate 1 } }";
+        assert_eq!(look_of(&format!("{CAMERA}{cambrian}")), "cambrian");
+        let d3 = "Materials { Material { color 1 1 1 type 1 0 0 } }";
+        assert_eq!(look_of(&format!("{CAMERA}{d3}")), "wso");
+        let osb = "Materials { Material { color 1 1 1 type 1 0 0 glossy 1 } }";
+        assert_eq!(look_of(&format!("{CAMERA}{osb}")), "osb");
+        let ylc =
+            "DiskLights { numDiskLights 0 } Materials { Material { color 1 1 1 type 1 0 0 } }";
+        assert_eq!(look_of(&format!("{CAMERA}{ylc}")), "ylc");
+        let canonical = "Materials { Material { color 1 1 1 diffusionRate 1 } }";
+        assert_eq!(look_of(&format!("{CAMERA}{canonical}")), "original");
     }
 }

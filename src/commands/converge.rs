@@ -41,8 +41,8 @@ pub struct ConvergeArgs {
 
 pub fn run(args: &ConvergeArgs) -> Result<(), String> {
     let scene = load_for_render(&args.scene, &args.sampling.scene)?;
-    let world = World::build(&scene);
     let settings = args.sampling.settings(&scene, args.max_spp, false);
+    let world = World::build_with(&scene, settings.look.one_sided_planes);
     let reference = match &args.reference {
         Some(path) => read_image(path)?,
         None => {

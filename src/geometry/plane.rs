@@ -15,6 +15,8 @@ pub struct Plane {
     pub offset: f64,
     /// Deterministic texture frame (e1, e2) from the normal.
     frame: (Vec3, Vec3),
+    /// Hit only by rays that travel against the normal (W-Solaris's planes).
+    pub one_sided: bool,
 }
 
 impl Plane {
@@ -29,13 +31,14 @@ impl Plane {
             normal,
             offset: offset / length,
             frame: orthonormal_basis(&normal),
+            one_sided: false,
         })
     }
 
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
         let denominator = self.normal.dot(&ray.direction);
-        if denominator == 0.0 {
+        if denominator == 0.0 || (self.one_sided && denominator > 0.0) {
             return None;
         }
         let t = (self.offset - self.normal.dot(&ray.origin)) / denominator;

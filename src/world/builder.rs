@@ -12,6 +12,8 @@ use crate::scene::model::{MeshData, Object};
 #[derive(Default)]
 pub(super) struct Builder {
     pub(super) primitives: Vec<Primitive>,
+    /// Planes are hit from the front only (the look's rule).
+    pub(super) one_sided_planes: bool,
     /// One geometry mesh per distinct `MeshData` allocation.
     meshes: HashMap<*const MeshData, Arc<Mesh>>,
     /// The mesh data that some instance shades `smooth`.
@@ -63,7 +65,12 @@ impl Builder {
                 ..
             } => (*radius != 0.0 && radius.is_finite())
                 .then(|| Shape::Sphere(Sphere::new(*center, *radius, *motion))),
-            Object::Plane { normal, offset, .. } => Plane::new(*normal, *offset).map(Shape::Plane),
+            Object::Plane { normal, offset, .. } => {
+                Plane::new(*normal, *offset).map(|mut plane| {
+                    plane.one_sided = self.one_sided_planes;
+                    Shape::Plane(plane)
+                })
+            }
             Object::Triangle { vertices, .. } => Some(Shape::Triangle(Triangle::new(*vertices))),
             Object::Rectangle {
                 origin,

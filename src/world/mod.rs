@@ -98,7 +98,14 @@ impl World {
     /// Degenerate shapes (zero radius, zero normal, zero area, unusable profiles)
     /// are dropped.
     pub fn build(scene: &Scene) -> World {
+        World::build_with(scene, false)
+    }
+
+    /// [`World::build`] with planes that rays hit from the front only
+    /// (`one_sided_planes`, a look's convention).
+    pub fn build_with(scene: &Scene, one_sided_planes: bool) -> World {
         let mut builder = Builder::for_tree(&scene.root);
+        builder.one_sided_planes = one_sided_planes;
         builder.visit(&scene.root, None);
         let mut world = World::from_primitives(builder.primitives);
         world.needs_uv = scene

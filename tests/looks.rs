@@ -1,0 +1,118 @@
+//! The conventions of the looks, checked on scenes whose pixels are known
+//! in closed form: what a ray that misses brings back, and the course
+//! framework's ray caster.
+
+mod common;
+
+use pathtracer::color::Color;
+use pathtracer::integrator::Integrator;
+use pathtracer::look::Look;
+use pathtracer::math::Vec3;
+use pathtracer::render::{RenderSettings, render};
+use pathtracer::sampler::SamplerKind;
+use pathtracer::scene::model::{Light, Material, Object, Phong, Scene};
+use pathtracer::world::World;
+
+fn settings(look: Look, integrator: Integrator, spp: u32) -> RenderSettings {
+    RenderSettings {
+        width: 4,
+        height: 4,
+        spp,
+        seed: 3,
+        threads: None,
+        integrator,
+        max_depth: look.max_depth,
+        sampler: SamplerKind::Independent,
+        progress: false,
+        clamp: None,
+        light_paths: true,
+        look,
+    }
+}
+
+fn mean(scene: &Scene, settings: &RenderSettings) -> Color {
+    let world = World::build(scene);
+    let (image, _) = render(scene, &world, settings).expect("renders");
+    let n = image.pixels.len() as f64;
+    image.pixels.iter().fold(Color::BLACK, |sum, &c| sum + c) * (1.0 / n)
+}
+
+/// A diffuse floor of albedo 0.5 filling the view (the camera looks
+/// straight down) under a uniform background of 0.8: every path leaves it
+/// towards the open sky after one bounce.
+fn floor_under_sky() -> Scene {
+    let floor = Material {
+        color: Color::gray(0.5),
+        ..Material::default()
+    };
+    let root = Object::Plane {
+        normal: Vec3::y(),
+        offset: -1.0,
+        material: 0,
+    };
+    let mut scene = common::scene_with(vec![floor], root);
+    scene.camera.direction = Vec3::new(0.0, -1.0, 0.0);
+    scene.camera.up = Vec3::z();
+    scene.background = Color::gray(0.8);
+    scene
+}
+
+#[test]
+fn a_miss_brings_back_what_the_look_says() {
+    let scene = floor_under_sky();
+    for integrator in [Integrator::Path, Integrator::Original] {
+        let value = |look: Look| mean(&scene, &settings(look, integrator, 16)).r;
+        // The original: the background only for camera rays.
+        assert!(value(Look::ORIGINAL).abs() < 1e-12);
+        assert!(value(Look::CAMBRIAN).abs() < 1e-12);
+        // An environment light: albedo times the sky, exactly (the open
+        // hemisphere integrates the cosine to 1 whatever the samples).
+        assert!(
+            (value(Look::PHYSICAL) - 0.4).abs() < 1e-12,
+            "{}",
+            value(Look::PHYSICAL)
+        );
+        // W-Solaris adds the sky raw on every miss: the floor glows with it.
+        assert!(
+            (value(Look::WSO) - 0.8).abs() < 1e-12,
+            "{}",
+            value(Look::WSO)
+        );
+    }
+}
+
+#[test]
+fn the_pa1_look_casts_rays_with_the_framework_phong_term() {
+    // A sphere straight ahead; the directional light shines along the
+    // view, so the centre pixel sees n = l = v: kd + ks, unshadowed.
+    let material = Material {
+        color: Color::new(0.2, 0.4, 0.1),
+        phong: Some(Phong {
+            color: Color::gray(0.3),
+            exponent: 20.0,
+        }),
+        ..Material::default()
+    };
+    let root = Object::Sphere {
+        center: Vec3::new(0.0, 0.0, -5.0),
+        radius: 1.0,
+        motion: Vec3::zeros(),
+        material: 0,
+    };
+    let mut scene = common::scene_with(vec![material], root);
+    scene.camera.width = 3;
+    scene.camera.height = 3;
+    scene.lights = vec![Light::Directional {
+        direction: Vec3::new(0.0, 0.0, -1.0),
+        color: Color::gray(0.9),
+    }];
+    let world = World::build(&scene);
+    let mut s = settings(Look::PA1, Integrator::RayCast, 1);
+    s.width = 3;
+    s.height = 3;
+    let (image, _) = render(&scene, &world, &s).expect("renders");
+    let centre = image.pixels[4];
+    let expected = (0.2 + 0.3) * 0.9;
+    assert!((centre.r - expected).abs() < 1e-9, "{centre:?}");
+    assert!((centre.g - (0.4 + 0.3) * 0.9).abs() < 1e-9);
+}
