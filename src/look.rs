@@ -10,7 +10,7 @@
 //! | `original` | the ported renderer (canonical dialect) | path tracing | 5 | background for camera rays | when the scene has no emitter | yes | Schlick |
 //! | `physical` | this project's physically based rendering | path tracing | 5 | background, weighted, at every depth | when the scene has no emitter | yes | exact Fresnel |
 //! | `pa1` | the course framework's ray caster (Achazwl, aliezlo `rc`, Cambrian's first renders) | ray casting: Phong per light, no shadows, pixel centres | 1 | background | always | the framework's | none |
-//! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick |
+//! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick; texels times the colour |
 //! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing | 15 hits | background, unweighted, at every depth | never | no | Schlick; planes one-sided |
 //! | `osb` | one-step-beh1nd | path tracing | unlimited (roulette) | black | never | no | reflect with 0.25 + R/2, unweighted |
 //! | `ylc` | ylc2001 | path tracing | unlimited (roulette) | background, unweighted | never | no | Schlick |
@@ -87,6 +87,9 @@ pub struct Look {
     /// Whether planes are hit from the front only (so that light passes
     /// through them from behind).
     pub one_sided_planes: bool,
+    /// Whether a texel is multiplied by the material's colour (Cambrian's
+    /// `colour x texture`) instead of replacing it (the original's).
+    pub texture_times_color: bool,
 }
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -105,6 +108,7 @@ impl Look {
         fresnel: DielectricFresnel::Schlick,
         pixels: PixelSampling::Tent,
         one_sided_planes: false,
+        texture_times_color: false,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -132,6 +136,7 @@ impl Look {
         miss: Miss::Black,
         point_lights: PointLights::Never,
         phong_lobes: false,
+        texture_times_color: true,
         ..Look::ORIGINAL
     };
 

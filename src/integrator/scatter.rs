@@ -24,6 +24,11 @@ pub fn bsdf_at<'v>(view: &'v SceneView, at: &Shading, wo: &Vec3, glass: GlassCho
         .lobe_sets
         .get(at.material_index)
         .unwrap_or(&view.default_lobes);
+    if view.look.texture_times_color && at.material.texture.is_some() {
+        let cos_o = at.normal.dot(wo);
+        let color = at.color * at.material.color;
+        return Bsdf::new(set, color, &at.normal, at.entering, cos_o, rules);
+    }
     at.bsdf(set, wo, rules)
 }
 
