@@ -12,6 +12,7 @@ macro_rules! say {
 pub mod check;
 pub mod compare;
 pub mod converge;
+pub mod lookalike;
 pub mod render;
 
 use std::path::{Path, PathBuf};
@@ -93,6 +94,19 @@ pub struct SamplingOptions {
 }
 
 impl SamplingOptions {
+    /// The options `render` runs with when none are given: clap's defaults
+    /// above, parsed from an empty command line, so there is one source.
+    pub fn defaults() -> Result<SamplingOptions, String> {
+        #[derive(clap::Parser)]
+        struct Bare {
+            #[command(flatten)]
+            sampling: SamplingOptions,
+        }
+        <Bare as clap::Parser>::try_parse_from(["pathtracer"])
+            .map(|bare| bare.sampling)
+            .map_err(|e| format!("default render options: {e}"))
+    }
+
     pub fn settings(&self, scene: &Scene, spp: u32, progress: bool) -> RenderSettings {
         RenderSettings {
             width: self.width.unwrap_or(scene.camera.width),
