@@ -65,7 +65,9 @@ pub fn run(args: &CompareArgs) -> Result<(), String> {
 fn parse_ppd(text: &str) -> Result<f64, String> {
     match text.parse::<f64>() {
         Ok(ppd) if ppd.is_finite() && ppd > 0.0 => Ok(ppd),
-        _ => Err(format!("'{text}' is not a positive number of pixels per degree")),
+        _ => Err(format!(
+            "'{text}' is not a positive number of pixels per degree"
+        )),
     }
 }
 

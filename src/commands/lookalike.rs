@@ -87,7 +87,12 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
             spp: args.spp,
         };
         let row = catch_unwind(AssertUnwindSafe(|| job.run())).unwrap_or_else(|_| {
-            job.failed(0.0, false, None, "panicked (see the message above)".to_string())
+            job.failed(
+                0.0,
+                false,
+                None,
+                "panicked (see the message above)".to_string(),
+            )
         });
         match &row.outcome {
             Ok(f) => eprintln!(
@@ -145,7 +150,13 @@ impl PairJob<'_> {
         self.images.join(format!("{}.{kind}.png", self.slug))
     }
 
-    fn failed(&self, seconds: f64, has_theirs: bool, dialect: Option<String>, error: String) -> Row {
+    fn failed(
+        &self,
+        seconds: f64,
+        has_theirs: bool,
+        dialect: Option<String>,
+        error: String,
+    ) -> Row {
         Row {
             pair: self.pair.clone(),
             slug: self.slug.clone(),
@@ -189,7 +200,10 @@ impl PairJob<'_> {
         };
         let dialect = Some(scene.dialect.name().to_string());
         if !scene.warnings.is_empty() {
-            eprintln!("        {} warnings (pathtracer check lists them)", scene.warnings.len());
+            eprintln!(
+                "        {} warnings (pathtracer check lists them)",
+                scene.warnings.len()
+            );
         }
         let mut sampling = self.sampling.clone();
         sampling.width = Some(width as u32);

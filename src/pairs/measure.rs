@@ -48,7 +48,13 @@ mod tests {
             width: 100,
             height: 50,
             pixels: (0..100 * 50)
-                .map(|i| if (i % 100) < 50 { [200, 40, 40] } else { [20, 20, 160] })
+                .map(|i| {
+                    if (i % 100) < 50 {
+                        [200, 40, 40]
+                    } else {
+                        [20, 20, 160]
+                    }
+                })
                 .collect(),
         };
         let ours = Image {
@@ -68,6 +74,9 @@ mod tests {
         assert!(measured.lookalike.same, "{}", measured.lookalike);
         assert_eq!(measured.theirs, measured.ours);
         assert_eq!(measured.flip, 0.0);
-        assert_eq!((measured.error_map.width, measured.error_map.height), (20, 10));
+        assert_eq!(
+            (measured.error_map.width, measured.error_map.height),
+            (20, 10)
+        );
     }
 }

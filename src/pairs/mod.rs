@@ -177,9 +177,15 @@ mod tests {
         assert_eq!(pairs[0].confidence, Confidence::Doubt);
         assert_eq!(pairs[1].confidence, Confidence::Ok);
         let root = Path::new("/r");
-        assert_eq!(pairs[0].scene_path(root), Path::new("/r/repo/a/code/t/x.txt"));
+        assert_eq!(
+            pairs[0].scene_path(root),
+            Path::new("/r/repo/a/code/t/x.txt")
+        );
         assert_eq!(pairs[0].base_path(root), Path::new("/r/repo/a/code"));
-        assert_eq!(pairs[0].render_path(root), Path::new("/r/repo/a/renders/x__pt.png"));
+        assert_eq!(
+            pairs[0].render_path(root),
+            Path::new("/r/repo/a/renders/x__pt.png")
+        );
         assert_eq!(pairs[0].slug(), "repo-a__x__pt");
     }
 

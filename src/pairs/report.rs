@@ -310,7 +310,11 @@ mod tests {
         let columns = lines[0].split(',').count();
         assert_eq!(lines[1].split(',').count(), columns);
         assert!(lines[1].contains(",160,80,200x100,1.25,1.000,3.000,same,0.10000,false,"));
-        assert!(lines[2].ends_with(",failed,,,\"x.txt:3:4: \"\"a\"\", b\""), "{}", lines[2]);
+        assert!(
+            lines[2].ends_with(",failed,,,\"x.txt:3:4: \"\"a\"\", b\""),
+            "{}",
+            lines[2]
+        );
     }
 
     #[test]
