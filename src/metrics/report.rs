@@ -161,3 +161,77 @@ impl fmt::Display for Report {
         write!(f, "\n{}", self.lookalike)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::color::Color;
+
+    fn image(width: usize, height: usize, shade: impl Fn(usize) -> f64) -> Image {
+        Image {
+            width,
+            height,
+            pixels: (0..width * height)
+                .map(|i| Color::gray((shade(i) * 255.0).floor() / 255.0))
+                .collect(),
+        }
+    }
+
+    fn display(image: &Image) -> Encoded<'_> {
+        Encoded {
+            image,
+            encoding: Encoding::Display,
+        }
+    }
+
+    #[test]
+    fn identical_display_images_have_zero_flip_a_black_map_and_look_the_same() {
+        let a = image(16, 12, |i| (i % 7) as f64 / 7.0);
+        let evaluation = evaluate(display(&a), display(&a), 67.0).unwrap();
+        let report = &evaluation.report;
+        assert_eq!(
+            report.flip,
+            FlipMean::Value {
+                mean: 0.0,
+                pixels_per_degree: 67.0
+            }
+        );
+        assert!(report.lookalike.same && report.pixels.is_some_and(|p| p.rmse == 0.0));
+        let map = evaluation.error_map.unwrap();
+        assert!(map.values.iter().all(|&v| v == 0.0));
+        assert!(report.to_json().contains("\"flip\": 0.0, \"ppd\": 67.0"));
+    }
+
+    #[test]
+    fn linear_images_get_no_flip_and_the_largest_channel_difference() {
+        let a = image(8, 8, |_| 0.5);
+        let b = image(8, 8, |i| if i == 0 { 0.75 } else { 0.5 });
+        let linear = Encoded {
+            image: &b,
+            encoding: Encoding::Linear,
+        };
+        let evaluation = evaluate(display(&a), linear, 67.0).unwrap();
+        assert_eq!(evaluation.report.flip, FlipMean::LinearImage);
+        let map = evaluation.error_map.unwrap();
+        assert!((map.values[0] - 0.25).abs() < 0.01 && map.values[1..].iter().all(|&v| v == 0.0));
+        assert!(evaluation.report.to_string().contains("flip n/a"));
+    }
+
+    #[test]
+    fn images_of_different_sizes_get_the_lookalike_criterion_only() {
+        let small = image(20, 10, |_| 0.5);
+        let large = image(40, 20, |_| 0.5);
+        let evaluation = evaluate(display(&small), display(&large), 67.0).unwrap();
+        let report = &evaluation.report;
+        assert!(report.pixels.is_none() && evaluation.error_map.is_none());
+        assert_eq!(report.flip, FlipMean::SizesDiffer);
+        assert!(report.lookalike.same && !report.lookalike.aspect_differs);
+        let json = report.to_json();
+        assert!(json.starts_with(
+            "{\"rmse\": null, \"rel_mse\": null, \"psnr\": null, \"ssim\": null, \"flip\": null"
+        ));
+        assert!(json.ends_with(
+            "\"same\": true, \"aspect_differs\": false, \"width\": 32, \"height\": 16}}"
+        ));
+    }
+}
