@@ -5,7 +5,8 @@
 //! scene text -> syntax tree -> built [`scene::model::Scene`] -> [`world::World`]
 //! -> [`camera::Camera`] rays -> [`integrator`] samples -> [`film`] ->
 //! [`image_io`] file. [`render::render`] is the only parallel code;
-//! [`metrics`] compares images (RMSE, relative MSE, PSNR, SSIM).
+//! [`metrics`] compares images (RMSE, relative MSE, PSNR, SSIM, FLIP, the
+//! look-alike criterion); [`pairs`] measures our renders of reference pairs.
 
 pub mod accel;
 pub mod adaptive;
@@ -21,6 +22,7 @@ pub mod lights;
 pub mod look;
 pub mod math;
 pub mod metrics;
+pub mod pairs;
 pub mod plot;
 pub mod render;
 pub mod rng;

@@ -24,8 +24,10 @@ enum Command {
     Check(commands::check::CheckArgs),
     /// Render a scene file to an image.
     Render(commands::render::RenderArgs),
-    /// Compare an image with a reference: RMSE, relative MSE, PSNR, SSIM.
+    /// Compare an image with a reference: RMSE, relative MSE, PSNR, SSIM, FLIP, look-alike.
     Compare(commands::compare::CompareArgs),
+    /// Render every pair of a pairs file and measure how alike ours and theirs look.
+    Lookalike(commands::lookalike::LookalikeArgs),
     /// Convert an image to another format (8-bit output clamped, optional gamma).
     Convert(commands::compare::ConvertArgs),
     /// Render at doubling sample counts and record error against time.
@@ -39,6 +41,7 @@ fn main() -> ExitCode {
         Command::Check(args) => commands::check::run(&args),
         Command::Render(args) => commands::render::run(&args),
         Command::Compare(args) => commands::compare::run(&args),
+        Command::Lookalike(args) => commands::lookalike::run(&args),
         Command::Convert(args) => commands::compare::convert(&args),
         Command::Converge(args) => commands::converge::run(&args),
         Command::Plot(args) => commands::converge::plot(&args),

@@ -1,4 +1,7 @@
-//! Image comparison metrics: RMSE, relative MSE, PSNR and SSIM.
+//! Image comparison metrics: RMSE, relative MSE, PSNR and SSIM here; FLIP
+//! (`flip`), the look-alike criterion (`lookalike`), error maps
+//! (`error_map`), box resampling (`resample`) and the report of
+//! `pathtracer compare` (`report`) in their own files.
 //!
 //! `compare(test, reference)` measures a rendered image against a reference of the
 //! same size. RMSE, relative MSE and PSNR use the linear values as stored, so HDR
@@ -7,6 +10,11 @@
 //! sigma 1.5, K1 = 0.01, K2 = 0.03, L = 1; see `metrics/ssim.rs`). A NaN in either image
 //! propagates to RMSE, relative MSE and PSNR.
 
+pub mod error_map;
+pub mod flip;
+pub mod lookalike;
+pub mod report;
+pub mod resample;
 mod ssim;
 
 use std::fmt;
@@ -83,7 +91,7 @@ pub fn compare(test: &Image, reference: &Image) -> Result<Comparison, String> {
 }
 
 /// A JSON number, or `null` for infinity and NaN, which JSON cannot express.
-fn json_number(value: f64) -> String {
+pub(crate) fn json_number(value: f64) -> String {
     if value.is_finite() {
         // Debug prints the shortest exact form, e.g. `0.1`, `1.0`, `1e-7`: all valid JSON.
         format!("{value:?}")

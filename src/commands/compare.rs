@@ -5,30 +5,70 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use pathtracer::image_io::{read_image, write_image};
-use pathtracer::metrics::compare;
+use pathtracer::image_io::{check_writable, read_image, read_image_encoded, write_image};
+use pathtracer::metrics::flip::DEFAULT_PIXELS_PER_DEGREE;
+use pathtracer::metrics::report::{Encoded, evaluate};
 
 #[derive(Args)]
 pub struct CompareArgs {
-    /// The image under test (BMP, PNG or PFM).
+    /// The image under test (BMP, PNG, PFM or EXR).
     image: PathBuf,
     /// The reference image.
     reference: PathBuf,
     /// Print JSON instead of text.
     #[arg(long)]
     json: bool,
+    /// FLIP's viewing conditions in pixels per degree of visual angle
+    /// (default 67: a 0.7 m wide 3840-pixel monitor seen from 0.7 m).
+    #[arg(long, default_value_t = DEFAULT_PIXELS_PER_DEGREE, value_parser = parse_ppd)]
+    ppd: f64,
+    /// Write the per-pixel error map (FLIP, or the largest channel
+    /// difference for linear images) in the magma colour map (.png or .bmp).
+    #[arg(long, value_name = "HEAT.png")]
+    diff: Option<PathBuf>,
 }
 
 pub fn run(args: &CompareArgs) -> Result<(), String> {
-    let test = read_image(&args.image)?;
-    let reference = read_image(&args.reference)?;
-    let comparison = compare(&test, &reference)?;
+    if let Some(diff) = &args.diff {
+        check_writable(diff, 1, 1)?;
+    }
+    let (test, test_encoding) = read_image_encoded(&args.image)?;
+    let (reference, reference_encoding) = read_image_encoded(&args.reference)?;
+    let evaluation = evaluate(
+        Encoded {
+            image: &test,
+            encoding: test_encoding,
+        },
+        Encoded {
+            image: &reference,
+            encoding: reference_encoding,
+        },
+        args.ppd,
+    )?;
+    if let Some(diff) = &args.diff {
+        let map = evaluation.error_map.as_ref().ok_or_else(|| {
+            format!(
+                "--diff needs images of the same size ({}x{} against a {}x{} reference)",
+                test.width, test.height, reference.width, reference.height
+            )
+        })?;
+        map.to_magma().write(diff)?;
+    }
     if args.json {
-        say!("{}", comparison.to_json());
+        say!("{}", evaluation.report.to_json());
     } else {
-        say!("{comparison}");
+        say!("{}", evaluation.report);
     }
     Ok(())
+}
+
+fn parse_ppd(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(ppd) if ppd.is_finite() && ppd > 0.0 => Ok(ppd),
+        _ => Err(format!(
+            "'{text}' is not a positive number of pixels per degree"
+        )),
+    }
 }
 
 #[derive(Args)]

@@ -1,6 +1,7 @@
 //! `pathtracer converge` (error against time for one scene) and
 //! `pathtracer plot` (several such curves in one SVG).
 
+use crate::commands::world_for;
 use std::path::PathBuf;
 
 use clap::Args;
@@ -9,7 +10,6 @@ use pathtracer::converge::{Reach, converge, read_csv_series, time_to_reach, to_c
 use pathtracer::image_io::{read_image, write_image};
 use pathtracer::plot::{Series, log_log_svg};
 use pathtracer::render::render;
-use pathtracer::world::World;
 
 use super::{SamplingOptions, default_output, load_for_render};
 
@@ -42,7 +42,7 @@ pub struct ConvergeArgs {
 pub fn run(args: &ConvergeArgs) -> Result<(), String> {
     let scene = load_for_render(&args.scene, &args.sampling.scene)?;
     let settings = args.sampling.settings(&scene, args.max_spp, false);
-    let world = World::build_with(&scene, settings.look.one_sided_planes);
+    let world = world_for(&scene, &settings);
     let reference = match &args.reference {
         Some(path) => read_image(path)?,
         None => {

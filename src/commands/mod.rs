@@ -12,6 +12,7 @@ macro_rules! say {
 pub mod check;
 pub mod compare;
 pub mod converge;
+pub mod lookalike;
 pub mod render;
 
 use std::path::{Path, PathBuf};
@@ -24,6 +25,7 @@ use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Dialect, Scene};
 use pathtracer::scene::{LoadOptions, load_scene};
+use pathtracer::world::World;
 
 #[derive(Args, Clone)]
 pub struct SceneOptions {
@@ -106,6 +108,19 @@ impl SamplingOptions {
         }
     }
 
+    /// The options `render` runs with when none are given: clap's defaults
+    /// above, parsed from an empty command line, so there is one source.
+    pub fn defaults() -> Result<SamplingOptions, String> {
+        #[derive(clap::Parser)]
+        struct Bare {
+            #[command(flatten)]
+            sampling: SamplingOptions,
+        }
+        <Bare as clap::Parser>::try_parse_from(["pathtracer"])
+            .map(|bare| bare.sampling)
+            .map_err(|e| format!("default render options: {e}"))
+    }
+
     pub fn settings(&self, scene: &Scene, spp: u32, progress: bool) -> RenderSettings {
         let (look, _) = self.look(scene);
         let integrator = self.integrator.unwrap_or(match look.estimator {
@@ -171,6 +186,11 @@ pub fn load_for_render(path: &Path, options: &SceneOptions) -> Result<Scene, Str
         eprintln!("warning: {warning}");
     }
     Ok(scene)
+}
+
+/// The world of `scene` as `settings` render it (the look's planes).
+pub fn world_for(scene: &Scene, settings: &RenderSettings) -> World {
+    World::build_with(scene, settings.look.one_sided_planes)
 }
 
 /// `output/<scene name><suffix>`.

@@ -1,5 +1,6 @@
 //! `pathtracer render`: a scene file to an image, with a one-line summary.
 
+use crate::commands::world_for;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -58,7 +59,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let settings = args.sampling.settings(&scene, args.spp, !args.quiet);
     check_writable(&output, settings.width as usize, settings.height as usize)?;
     let world_start = Instant::now();
-    let world = World::build_with(&scene, settings.look.one_sided_planes);
+    let world = world_for(&scene, &settings);
     let world_seconds = world_start.elapsed().as_secs_f64();
     let rule = StoppingRule {
         target_error: args.target_error,

@@ -6,7 +6,7 @@ use std::path::Path;
 
 use image::{DynamicImage, ImageReader, Limits};
 
-use super::{Image, MAX_DIMENSION, MAX_PIXELS};
+use super::{Encoding, Image, MAX_DIMENSION, MAX_PIXELS};
 use crate::color::Color;
 
 /// The largest file read: an uncompressed float RGB image at the pixel cap, plus a header.
@@ -30,8 +30,9 @@ pub(super) fn read_capped(path: &Path) -> Result<Vec<u8>, String> {
 }
 
 /// Decodes BMP, PNG, JPEG, TGA or EXR bytes; 8-bit values become `v / 255`,
-/// no gamma; float values are kept.
-pub(super) fn decode_ldr(bytes: &[u8]) -> Result<Image, String> {
+/// no gamma; float values are kept. Integer samples (8 or 16 bits) are
+/// display values, float samples (EXR) linear radiance.
+pub(super) fn decode_ldr(bytes: &[u8]) -> Result<(Image, Encoding), String> {
     let mut reader = ImageReader::new(Cursor::new(bytes))
         .with_guessed_format()
         .map_err(|e| format!("cannot read: {e}"))?;
@@ -51,6 +52,10 @@ pub(super) fn decode_ldr(bytes: &[u8]) -> Result<Image, String> {
             "{width}x{height} image exceeds the limit of {MAX_PIXELS} pixels"
         ));
     }
+    let encoding = match decoded {
+        DynamicImage::ImageRgb32F(_) | DynamicImage::ImageRgba32F(_) => Encoding::Linear,
+        _ => Encoding::Display,
+    };
     let pixels = match decoded {
         // 8-bit sources are divided in f64 so that `v / 255` is exact to the last bit.
         DynamicImage::ImageLuma8(_)
@@ -73,9 +78,12 @@ pub(super) fn decode_ldr(bytes: &[u8]) -> Result<Image, String> {
             .map(|p| Color::new(p[0] as f64, p[1] as f64, p[2] as f64))
             .collect(),
     };
-    Ok(Image {
-        width,
-        height,
-        pixels,
-    })
+    Ok((
+        Image {
+            width,
+            height,
+            pixels,
+        },
+        encoding,
+    ))
 }

@@ -1,4 +1,4 @@
-//! Reading and writing images: BMP, PNG and PFM, written atomically.
+//! Reading and writing images: BMP, PNG, PFM and EXR, written atomically.
 //!
 //! The format of a written file is chosen by its extension (case-insensitive);
 //! a read file is recognised by its content. Every writer encodes the whole file
@@ -8,6 +8,7 @@
 mod atomic;
 mod bmp_format;
 mod decode;
+mod display;
 mod exr_format;
 mod pfm;
 mod png_format;
@@ -15,6 +16,7 @@ mod quantize;
 
 /// Writes any bytes to a file whole or not at all (temporary file + rename).
 pub use atomic::write_file as write_atomically;
+pub use display::DisplayImage;
 
 use std::path::Path;
 
@@ -26,6 +28,16 @@ pub struct Image {
     pub width: usize,
     pub height: usize,
     pub pixels: Vec<Color>,
+}
+
+/// What the values of a read image are.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Encoding {
+    /// Display values (8- or 16-bit BMP, PNG, JPEG, TGA), read as `v / max`:
+    /// what a viewer shows, whatever gamma made them.
+    Display,
+    /// Linear radiance as stored (PFM, EXR), possibly above 1.
+    Linear,
 }
 
 /// The largest width or height accepted when reading or writing.
@@ -134,9 +146,14 @@ pub fn write_image(path: &Path, image: &Image, gamma: Option<f64>) -> Result<(),
 /// The format is recognised by the file's content, not its extension. JPEG and
 /// TGA files are read too. PFM values are returned as stored (linear).
 pub fn read_image(path: &Path) -> Result<Image, String> {
+    read_image_encoded(path).map(|(image, _)| image)
+}
+
+/// [`read_image`], and whether the file held display values or linear radiance.
+pub fn read_image_encoded(path: &Path) -> Result<(Image, Encoding), String> {
     let bytes = decode::read_capped(path)?;
     let result = if pfm::is_pfm(&bytes) {
-        pfm::decode(&bytes)
+        pfm::decode(&bytes).map(|image| (image, Encoding::Linear))
     } else {
         decode::decode_ldr(&bytes)
     };

@@ -12,6 +12,11 @@ pub(super) struct Quantizer {
 }
 
 impl Quantizer {
+    /// The PA framework writer's mapping: no gamma.
+    pub(super) const FRAMEWORK: Quantizer = Quantizer {
+        inverse_gamma: None,
+    };
+
     /// Fails when the gamma is not a positive finite number.
     pub(super) fn new(gamma: Option<f64>) -> Result<Self, String> {
         match gamma {

@@ -128,6 +128,48 @@ fn exr_round_trip_keeps_hdr_values_and_orientation() {
 }
 
 #[test]
+fn display_bytes_survive_bmp_and_png_files_and_files_say_their_encoding() {
+    let directory = ScratchDirectory::new("display-bytes");
+    // Every byte value in every channel, in a 16x16 image of odd channel order.
+    let pixels: Vec<[u8; 3]> = (0..=255u8)
+        .map(|v| [v, 255 - v, v.rotate_left(3)])
+        .collect();
+    let bytes = DisplayImage {
+        width: 16,
+        height: 16,
+        pixels,
+    };
+    for name in ["bytes.png", "bytes.bmp"] {
+        let path = directory.join(name);
+        bytes.write(&path).unwrap();
+        let (image, encoding) = read_image_encoded(&path).unwrap();
+        assert_eq!(encoding, Encoding::Display, "{name}");
+        assert_eq!(DisplayImage::from_image(&image), bytes, "{name}");
+    }
+    for name in ["radiance.pfm", "radiance.exr"] {
+        let path = directory.join(name);
+        write_image(&path, &gradient(), None).unwrap();
+        assert_eq!(
+            read_image_encoded(&path).unwrap().1,
+            Encoding::Linear,
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn display_image_of_a_render_is_what_the_png_writer_stores() {
+    let directory = ScratchDirectory::new("display-of-render");
+    let path = directory.join("render.png");
+    let mut image = gradient();
+    image.pixels[3] = Color::new(7.0, -1.0, f64::NAN);
+    write_image(&path, &image, None).unwrap();
+    let read = DisplayImage::from_image(&read_image(&path).unwrap());
+    assert_eq!(read, DisplayImage::from_image(&image));
+    assert_eq!(read.pixels[3], [255, 0, 0]);
+}
+
+#[test]
 fn pfm_file_stores_rows_bottom_to_top() {
     let directory = ScratchDirectory::new("pfm-layout");
     let path = directory.join("two.pfm");
