@@ -233,7 +233,7 @@ fn lookalike_renders_each_pair_as_render_would_and_reports_failures_as_rows() {
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines.len(), 3, "{csv}");
     assert!(
-        lines[1].contains(",canonical,32,24,32x24,")
+        lines[1].contains(",canonical,original,32,24,32x24,")
             && lines[1].contains(",0.000,0.000,same,0.00000,false,"),
         "{}",
         lines[1]

@@ -156,13 +156,15 @@ impl PairJob<'_> {
         &self,
         seconds: f64,
         has_theirs: bool,
-        dialect: Option<String>,
+        scene: Option<(String, String)>,
         error: String,
     ) -> Row {
+        let (dialect, look) = scene.unzip();
         Row {
             pair: self.pair.clone(),
             slug: self.slug.clone(),
             dialect,
+            look,
             seconds,
             has_theirs,
             outcome: Err(error),
@@ -201,7 +203,7 @@ impl PairJob<'_> {
             }
         };
         let (look, _) = self.sampling.look(&scene);
-        let dialect = Some(format!("{}, look {}", scene.dialect.name(), look.name));
+        let dialect = Some((scene.dialect.name().to_string(), look.name.to_string()));
         if !scene.warnings.is_empty() {
             eprintln!(
                 "        {} warnings (pathtracer check lists them)",
@@ -229,10 +231,12 @@ impl PairJob<'_> {
             Err(error) => return self.failed(seconds, has_theirs, dialect, error),
         };
         let l = measured.lookalike;
+        let (dialect, look) = dialect.unzip();
         Row {
             pair: self.pair.clone(),
             slug: self.slug.clone(),
             dialect,
+            look,
             seconds,
             has_theirs,
             outcome: Ok(Figures {

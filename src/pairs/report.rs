@@ -26,8 +26,10 @@ pub struct Row {
     pub pair: Pair,
     /// File-name-safe name; the images are `images/<slug>.{ours,theirs,diff}.png`.
     pub slug: String,
-    /// The scene's detected dialect, once it has loaded.
+    /// The scene's detected dialect and the look it was rendered in, once
+    /// it has loaded.
     pub dialect: Option<String>,
+    pub look: Option<String>,
     /// Loading, building and rendering, in seconds.
     pub seconds: f64,
     /// Whether `images/<slug>.theirs.png` was written.
@@ -86,7 +88,7 @@ pub fn summary(rows: &[Row]) -> String {
 /// The CSV file: a header line, then one line per row.
 pub fn csv(rows: &[Row]) -> String {
     let mut text = String::from(
-        "name,folder,scene,render,confidence,dialect,width,height,reference_pixels,seconds,mean,p95,verdict,flip,aspect_differs,error\n",
+        "name,folder,scene,render,confidence,dialect,look,width,height,reference_pixels,seconds,mean,p95,verdict,flip,aspect_differs,error\n",
     );
     for row in rows {
         let pair = &row.pair;
@@ -114,6 +116,7 @@ pub fn csv(rows: &[Row]) -> String {
             pair.render.clone(),
             pair.confidence.name().to_string(),
             row.dialect.clone().unwrap_or_default(),
+            row.look.clone().unwrap_or_default(),
             width,
             height,
             format!("{}x{}", pair.pixels.0, pair.pixels.1),
@@ -185,7 +188,7 @@ pub fn html(rows: &[Row], run: &RunDescription) -> String {
     );
     page.push_str(
         "<table>\n<tr><th>pair</th><th>ours</th><th>theirs</th><th>error map</th><th>mean</th><th>p95</th>\
-         <th>verdict</th><th>FLIP</th><th>seconds</th><th>dialect</th></tr>\n",
+         <th>verdict</th><th>FLIP</th><th>seconds</th><th>dialect</th><th>look</th></tr>\n",
     );
     for row in rows {
         let pair = &row.pair;
@@ -239,9 +242,10 @@ pub fn html(rows: &[Row], run: &RunDescription) -> String {
         }
         let _ = writeln!(
             page,
-            "<td>{:.1}</td><td>{}</td></tr>",
+            "<td>{:.1}</td><td>{}</td><td>{}</td></tr>",
             row.seconds,
-            escape(row.dialect.as_deref().unwrap_or(""))
+            escape(row.dialect.as_deref().unwrap_or("")),
+            escape(row.look.as_deref().unwrap_or(""))
         );
     }
     page.push_str("</table>\n</body>\n</html>\n");
@@ -264,6 +268,7 @@ mod tests {
             },
             slug: "repo-a-b__x".to_string(),
             dialect: Some("pa1".to_string()),
+            look: Some("pa1".to_string()),
             seconds: 1.25,
             has_theirs: true,
             outcome,
