@@ -11,7 +11,27 @@ pub struct Texture {
     pub texels: Vec<[f32; 3]>,
 }
 
+/// The colours of [`Texture::placeholder`]: magenta and mid grey.
+pub const PLACEHOLDER_COLORS: [[f32; 3]; 2] = [[1.0, 0.0, 1.0], [0.5, 0.5, 0.5]];
+
 impl Texture {
+    /// What a missing colour texture becomes with `--missing-assets
+    /// placeholder`: 8x8 texels alternating magenta (texel (0, 0), the top
+    /// left, and every texel whose column plus row is even) and mid grey, so
+    /// that a surface shows 8x8 squares across its uv range (a tiled plane
+    /// one square per texel).
+    pub fn placeholder() -> Texture {
+        const SIZE: usize = 8;
+        let texels = (0..SIZE * SIZE)
+            .map(|k| PLACEHOLDER_COLORS[(k / SIZE + k % SIZE) % 2])
+            .collect();
+        Texture {
+            width: SIZE,
+            height: SIZE,
+            texels,
+        }
+    }
+
     /// Nearest texel at (u, v) in [0, 1], v = 0 at the bottom (the original's
     /// `i = floor(u*W)`, `j = floor((1-v)*H)`, clamped).
     pub fn lookup(&self, u: f64, v: f64) -> Color {
@@ -87,6 +107,23 @@ mod tests {
             assert_eq!(t.lookup_wrapped(u, v), t.lookup(u, v));
             assert_eq!(t.lookup_wrapped(u + 1.0, v - 3.0), t.lookup(u, v));
         }
+    }
+
+    #[test]
+    fn placeholder_is_an_8x8_magenta_and_grey_checker() {
+        let t = Texture::placeholder();
+        assert_eq!((t.width, t.height, t.texels.len()), (8, 8, 64));
+        let magenta = Color::new(1.0, 0.0, 1.0);
+        let grey = Color::gray(0.5);
+        // Neighbours along either axis differ, diagonal ones agree.
+        for j in 0..8 {
+            for i in 0..8 {
+                let expected = if (i + j) % 2 == 0 { magenta } else { grey };
+                assert_eq!(t.texel(i, j), expected, "texel ({i}, {j})");
+            }
+        }
+        assert_eq!(t.lookup(0.01, 0.99), magenta);
+        assert_eq!(t.lookup(0.14, 0.99), grey);
     }
 
     #[test]

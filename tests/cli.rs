@@ -115,6 +115,49 @@ fn a_missing_mesh_is_an_error_naming_the_path() {
 }
 
 #[test]
+fn missing_assets_placeholder_renders_and_checks_with_a_warning_naming_the_file() {
+    let dir = temp_dir("placeholder");
+    let scene = dir.join("gone.txt");
+    std::fs::write(
+        &scene,
+        "PerspectiveCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 width 8 height 8 }\nMaterials { numMaterials 1 Material { color 1 1 1 texture texture/gone.png } }\nGroup { numObjects 2 MaterialIndex 0 Sphere { center 0 0 0 radius 1 } TriangleMesh { obj_file mesh/not_there.obj } }\n",
+    )
+    .unwrap();
+    let image = dir.join("gone.bmp");
+    let scene = scene.to_str().unwrap();
+    let render = |extra: &[&str]| {
+        let mut args = vec!["render", scene, "-o", image.to_str().unwrap(), "--quiet"];
+        args.extend_from_slice(extra);
+        pathtracer(&args)
+    };
+    assert!(!render(&[]).status.success(), "the default is an error");
+    assert!(!render(&["--missing-assets", "error"]).status.success());
+    let out = render(&["--missing-assets", "placeholder"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains(&format!(
+            "{scene}:2:59: texture 'texture/gone.png' not found"
+        )),
+        "{stderr}"
+    );
+    assert!(stderr.contains("not_there.obj"), "{stderr}");
+    assert!(image.exists());
+    let out = pathtracer(&["check", scene, "--missing-assets", "placeholder"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let out = pathtracer(&["check", scene, "--missing-assets", "maybe"]);
+    assert!(!out.status.success());
+}
+
+#[test]
 fn an_unknown_output_format_is_refused_before_rendering() {
     let dir = temp_dir("format");
     let out = render_smallpt(&dir.join("image.xyz"), "1", "0");

@@ -23,7 +23,7 @@ use pathtracer::look::Look;
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Dialect, Scene};
-use pathtracer::scene::{LoadOptions, load_scene};
+use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
 
 #[derive(Args, Clone)]
 pub struct SceneOptions {
@@ -36,6 +36,11 @@ pub struct SceneOptions {
     /// Treat warnings (unknown fields, count mismatches, ...) as errors.
     #[arg(long)]
     pub strict: bool,
+    /// A texture or mesh file that is not found: `error` (the default) or
+    /// `placeholder` (a magenta and grey checker for a colour texture, a
+    /// mesh or normal/height map left out; each with a warning).
+    #[arg(long, default_value = "error", value_parser = parse_missing_assets)]
+    pub missing_assets: MissingAssets,
 }
 
 impl SceneOptions {
@@ -44,6 +49,7 @@ impl SceneOptions {
             base: self.base.clone(),
             dialect: self.dialect,
             strict: self.strict,
+            missing_assets: self.missing_assets,
         }
     }
 }
@@ -129,6 +135,16 @@ fn parse_integrator(name: &str) -> Result<Integrator, String> {
     Integrator::from_name(name).ok_or_else(|| {
         let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
         format!("unknown integrator '{name}' (one of: {})", names.join(", "))
+    })
+}
+
+fn parse_missing_assets(name: &str) -> Result<MissingAssets, String> {
+    MissingAssets::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = MissingAssets::ALL.iter().map(|m| m.name()).collect();
+        format!(
+            "unknown --missing-assets '{name}' (one of: {})",
+            names.join(", ")
+        )
     })
 }
 

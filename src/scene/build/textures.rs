@@ -14,6 +14,7 @@ use std::collections::{BTreeSet, HashMap};
 use std::path::PathBuf;
 use std::sync::Arc;
 
+use crate::scene::MissingAssets;
 use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::build::{Context, paths};
 use crate::scene::error::SceneError;
@@ -76,18 +77,19 @@ pub fn load_textures(
     root.for_each_leaf(&mut |leaf| {
         used.extend(leaf.materials());
     });
-    let mut textures = Vec::new();
-    let mut cache: HashMap<PathBuf, usize> = HashMap::new();
+    let mut loader = Loader::default();
     let mut materials = Vec::new();
     for (index, spec) in specs.into_iter().enumerate() {
         let mut material = spec.material;
         if used.contains(&index) {
             if let Some(path) = &spec.texture {
-                material.texture = Some(load(context, path, &mut cache, &mut textures)?);
+                material.texture = loader.load(context, path, Role::Color)?;
             }
             for map in &spec.surface_maps {
-                let texture = load(context, &map.path, &mut cache, &mut textures)?;
-                let replaced = if is_height_map(&textures[texture], map.named) {
+                let Some(texture) = loader.load(context, &map.path, Role::SurfaceMap)? else {
+                    continue;
+                };
+                let replaced = if is_height_map(&loader.textures[texture], map.named) {
                     material
                         .bump
                         .replace(Bump {
@@ -111,7 +113,92 @@ pub fn load_textures(
         }
         materials.push(material);
     }
-    Ok((materials, textures))
+    Ok((materials, loader.textures))
+}
+
+/// What a material uses an image for (decides what a missing one becomes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Role {
+    /// A colour texture: the placeholder checker.
+    Color,
+    /// A normal or height map: left out.
+    SurfaceMap,
+}
+
+/// The texture table being filled, each file decoded once.
+#[derive(Default)]
+struct Loader {
+    textures: Vec<Arc<Texture>>,
+    cache: HashMap<PathBuf, usize>,
+    /// Index of the placeholder checker, once a texture is missing.
+    placeholder: Option<usize>,
+}
+
+impl Loader {
+    /// The index of the image `path` names; a missing file is an error, or
+    /// with `--missing-assets placeholder` a warning and the placeholder
+    /// (colour textures) or `None` (surface maps).
+    fn load(
+        &mut self,
+        context: &mut Context,
+        path: &PathRef,
+        role: Role,
+    ) -> Result<Option<usize>, SceneError> {
+        let file = match paths::resolve(&path.path, context.file, context.options) {
+            Ok(file) => file,
+            Err(tried) => {
+                let missing = format!(
+                    "texture '{}' not found (tried {})",
+                    path.path,
+                    paths::describe_tried(&tried)
+                );
+                if context.options.missing_assets == MissingAssets::Error {
+                    return Err(context.error(path.location, missing));
+                }
+                return match role {
+                    Role::Color => {
+                        context.warn(
+                            path.location,
+                            format!("{missing}: the placeholder checker instead"),
+                        )?;
+                        Ok(Some(self.placeholder()))
+                    }
+                    Role::SurfaceMap => {
+                        context.warn(path.location, format!("{missing}: left out"))?;
+                        Ok(None)
+                    }
+                };
+            }
+        };
+        if let Some(&index) = self.cache.get(&file) {
+            return Ok(Some(index));
+        }
+        let texture = read_image(&file).map_err(|e| {
+            context.error(
+                path.location,
+                format!("cannot read texture '{}': {e}", file.display()),
+            )
+        })?;
+        let index = self.push(texture);
+        self.cache.insert(file, index);
+        Ok(Some(index))
+    }
+
+    fn push(&mut self, texture: Texture) -> usize {
+        self.textures.push(Arc::new(texture));
+        self.textures.len() - 1
+    }
+
+    fn placeholder(&mut self) -> usize {
+        match self.placeholder {
+            Some(index) => index,
+            None => {
+                let index = self.push(Texture::placeholder());
+                self.placeholder = Some(index);
+                index
+            }
+        }
+    }
 }
 
 /// Whether the image named by a key of kind `named` is read as a height map
@@ -146,37 +233,6 @@ fn looks_like_normal_map(texture: &Texture) -> bool {
     }
     let [r, g, b] = sum.map(|s| s / texture.texels.len() as f64);
     b >= 0.6 && (r - 0.5).abs() <= 0.1 && (g - 0.5).abs() <= 0.1
-}
-
-fn load(
-    context: &mut Context,
-    path: &PathRef,
-    cache: &mut HashMap<PathBuf, usize>,
-    textures: &mut Vec<Arc<Texture>>,
-) -> Result<usize, SceneError> {
-    let file = paths::resolve(&path.path, context.file, context.options).map_err(|tried| {
-        context.error(
-            path.location,
-            format!(
-                "texture '{}' not found (tried {})",
-                path.path,
-                paths::describe_tried(&tried)
-            ),
-        )
-    })?;
-    if let Some(&index) = cache.get(&file) {
-        return Ok(index);
-    }
-    let texture = read_image(&file).map_err(|e| {
-        context.error(
-            path.location,
-            format!("cannot read texture '{}': {e}", file.display()),
-        )
-    })?;
-    textures.push(Arc::new(texture));
-    let index = textures.len() - 1;
-    cache.insert(file, index);
-    Ok(index)
 }
 
 /// Decodes an image into linear [0, 1] texels (no gamma conversion).
