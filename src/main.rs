@@ -26,7 +26,7 @@ enum Command {
     Render(commands::render::RenderArgs),
     /// Compare an image with a reference: RMSE, relative MSE, PSNR, SSIM.
     Compare(commands::compare::CompareArgs),
-    /// Convert an image to another format (8-bit output clamped, optional gamma).
+    /// Convert an image to another format (8-bit output: optional exposure, tone curve, gamma).
     Convert(commands::compare::ConvertArgs),
     /// Render at doubling sample counts and record error against time.
     Converge(commands::converge::ConvergeArgs),

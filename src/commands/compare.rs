@@ -5,7 +5,9 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use pathtracer::image_io::{read_image, write_image};
+use pathtracer::image_io::{Encoding, is_hdr, read_image, write_encoded};
+
+use super::EncodingOptions;
 use pathtracer::metrics::compare;
 
 #[derive(Args)]
@@ -37,11 +39,19 @@ pub struct ConvertArgs {
     input: PathBuf,
     /// The image to write (.bmp, .png, .pfm or .exr).
     output: PathBuf,
-    /// Gamma for 8-bit output, as `render --gamma`.
-    #[arg(long)]
-    gamma: Option<f64>,
+    /// Gamma, exposure and tone curve for 8-bit output, as `render`'s.
+    #[command(flatten)]
+    encoding: EncodingOptions,
 }
 
 pub fn convert(args: &ConvertArgs) -> Result<(), String> {
-    write_image(&args.output, &read_image(&args.input)?, args.gamma)
+    let encoding = args.encoding.encoding();
+    encoding.check()?;
+    if is_hdr(&args.output) && encoding != Encoding::default() {
+        eprintln!(
+            "warning: --gamma, --exposure and --tonemap apply to 8-bit outputs; {} stays linear",
+            args.output.display()
+        );
+    }
+    write_encoded(&args.output, &read_image(&args.input)?, &encoding)
 }

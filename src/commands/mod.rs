@@ -18,6 +18,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
+use pathtracer::image_io::{Encoding, Tonemap};
 use pathtracer::integrator::Integrator;
 use pathtracer::look::Look;
 use pathtracer::render::RenderSettings;
@@ -52,6 +53,41 @@ impl SceneOptions {
             missing_assets: self.missing_assets,
         }
     }
+}
+
+/// How 8-bit outputs (BMP, PNG) encode radiance, shared by `render` and
+/// `convert`; PFM and EXR outputs stay linear.
+#[derive(Args, Clone)]
+pub struct EncodingOptions {
+    /// Gamma for 8-bit output (2.2 for smallpt-style images; default: none,
+    /// as the PA framework writer).
+    #[arg(long)]
+    pub gamma: Option<f64>,
+    /// Exposure for 8-bit output in stops: values are multiplied by
+    /// 2^EXPOSURE before the tone curve (default 0).
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub exposure: f64,
+    /// Tone curve for 8-bit output, per channel: `none` (the default:
+    /// clipped at 1), `reinhard` (c / (1 + c)) or `aces` (Narkowicz's fit).
+    #[arg(long, default_value = "none", value_parser = parse_tonemap)]
+    pub tonemap: Tonemap,
+}
+
+impl EncodingOptions {
+    pub fn encoding(&self) -> Encoding {
+        Encoding {
+            exposure: self.exposure,
+            tonemap: self.tonemap,
+            gamma: self.gamma,
+        }
+    }
+}
+
+fn parse_tonemap(name: &str) -> Result<Tonemap, String> {
+    Tonemap::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Tonemap::ALL.iter().map(|t| t.name()).collect();
+        format!("unknown tone curve '{name}' (one of: {})", names.join(", "))
+    })
 }
 
 /// How to sample the image, shared by `render` and `converge`.
