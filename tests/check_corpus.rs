@@ -112,7 +112,6 @@ const NOT_RENDERED: &[&str] = &[
     "time1",
     "falloff",
     "lookat",
-    "SpotLight",
     "Textures",
     "Global",
     "Objects",

@@ -323,14 +323,25 @@ pub enum Light {
     Point { position: Point3, color: Color },
     /// Irradiance `color` arriving along `direction`.
     Directional { direction: Vec3, color: Color },
-    /// A one-sided disk emitting radiance `color` towards `normal`.
+    /// A point light that shines towards `direction` (unit): radiant
+    /// intensity `color * max(0, cos)^exponent`, the cosine of the angle
+    /// between `direction` and the way to the lit point (cyy's `SpotLight`).
+    Spot {
+        position: Point3,
+        direction: Vec3,
+        color: Color,
+        exponent: f64,
+    },
+    /// A disk facing `normal` of radiant power `color` (the scene builder
+    /// makes it emitting geometry).
     Disk {
         center: Point3,
         normal: Vec3,
         radius: f64,
         color: Color,
     },
-    /// A parallelogram `corner + s*edge_u + t*edge_v` emitting radiance `color`.
+    /// A parallelogram `corner + s*edge_u + t*edge_v` emitting radiance
+    /// `color` (the scene builder makes it emitting geometry).
     Area {
         corner: Point3,
         edge_u: Vec3,
