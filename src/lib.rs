@@ -32,4 +32,5 @@ pub mod subpixel;
 pub mod surface_maps;
 pub mod texture;
 pub mod trig;
+pub mod uv_rule;
 pub mod world;

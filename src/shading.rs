@@ -1,5 +1,5 @@
 //! What a surface hit means for light transport: the material, its colour
-//! (texture or constant), and normals (interpolated, normal- and bump-mapped,
+//! (texture at the hit's uv or by the material's `uv_rule`, or constant), and normals (interpolated, normal- and bump-mapped,
 //! see `surface_maps`) oriented towards the incoming ray.
 
 use crate::bsdf::{Bsdf, LobeSet, Rules};
@@ -51,9 +51,16 @@ impl<'a> Shading<'a> {
         if normal.dot(&geometric) < 0.0 {
             normal = -normal;
         }
-        let color = match material.texture.and_then(|i| scene.textures.get(i)) {
-            Some(texture) => surface_maps::texel_at(texture, hit),
-            None => material.color,
+        let color = match (
+            material.texture.and_then(|i| scene.textures.get(i)),
+            material.uv_rule,
+        ) {
+            (Some(texture), None) => surface_maps::texel_at(texture, hit),
+            (Some(texture), Some(rule)) => {
+                let [a, b] = rule.coordinates(&hit.point, hit.t, hit.uv);
+                texture.lookup_rows_down(a, b)
+            }
+            (None, _) => material.color,
         };
         Shading {
             point: hit.point,

@@ -9,6 +9,7 @@ use crate::color::Color;
 use crate::math::{Matrix, Point3, Vec3};
 use crate::scene::error::Diagnostic;
 use crate::texture::Texture;
+use crate::uv_rule::UvRule;
 
 /// A fully built scene.
 #[derive(Clone, Debug)]
@@ -193,6 +194,9 @@ pub struct Material {
     pub ior: f64,
     /// Index into `Scene::textures`.
     pub texture: Option<usize>,
+    /// Where `texture` is read: afb's rules from the world point (`Func`);
+    /// `None`: at the shape's uv.
+    pub uv_rule: Option<UvRule>,
     /// Index into `Scene::textures`: a tangent-space normal map.
     pub normal_map: Option<usize>,
     /// A greyscale height map (bump map).
@@ -227,6 +231,7 @@ impl Material {
         refract: 0.0,
         ior: 1.5,
         texture: None,
+        uv_rule: None,
         normal_map: None,
         bump: None,
         roughness: 0.0,

@@ -7,6 +7,7 @@ use crate::scene::build::weights::{Fields, Kind, preset, resolve};
 use crate::scene::build::{Context, Cursor};
 use crate::scene::error::{Location, SceneError};
 use crate::scene::model::{AngularWeights, Dialect, Material};
+use crate::uv_rule::UvRule;
 
 /// A path written in the file, with where it was written.
 #[derive(Clone, Debug, PartialEq)]
@@ -236,7 +237,19 @@ fn read_field(
                 "no dispersion (one index for all wavelengths)",
             )?;
         }
-        "textureScale" | "textureLuminance" | "Func" => {
+        "Func" => {
+            let n = cursor.integer(context, key)?;
+            f.uv_rule = UvRule::from_func(n);
+            if f.uv_rule.is_none() && n != 0 {
+                context.warn(
+                    location,
+                    format!(
+                        "'Func {n}' is not one of afb's texture rules (1 to 7): the shape's uv"
+                    ),
+                )?;
+            }
+        }
+        "textureScale" | "textureLuminance" => {
             cursor.take_numbers();
             context.not_rendered(location, key, "this texture convention is not implemented")?;
         }
