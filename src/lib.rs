@@ -11,6 +11,7 @@ pub mod accel;
 pub mod adaptive;
 pub mod bsdf;
 pub mod camera;
+pub mod checker;
 pub mod color;
 pub mod converge;
 pub mod film;

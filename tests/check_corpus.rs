@@ -93,7 +93,6 @@ fn content_facts() {
 const NOT_RENDERED: &[&str] = &[
     "textureScale",
     "textureLuminance",
-    "nTexture",
     "opacity",
     "transparency",
     "transparent",

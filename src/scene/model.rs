@@ -5,6 +5,7 @@
 
 use std::sync::Arc;
 
+use crate::checker::Checker;
 use crate::color::Color;
 use crate::math::{Matrix, Point3, Vec3};
 use crate::scene::error::Diagnostic;
@@ -197,6 +198,9 @@ pub struct Material {
     /// Where `texture` is read: afb's rules from the world point (`Func`);
     /// `None`: at the shape's uv.
     pub uv_rule: Option<UvRule>,
+    /// A procedural colour at the world point (rub's `checkerTexture`),
+    /// instead of `texture` and `color`.
+    pub checker: Option<Checker>,
     /// Index into `Scene::textures`: a tangent-space normal map.
     pub normal_map: Option<usize>,
     /// A greyscale height map (bump map).
@@ -232,6 +236,7 @@ impl Material {
         ior: 1.5,
         texture: None,
         uv_rule: None,
+        checker: None,
         normal_map: None,
         bump: None,
         roughness: 0.0,

@@ -218,12 +218,13 @@ fn read_field(
             f.surface_map = Some(SurfaceMapRef { path, named, scale });
         }
         "nTexture" => {
-            cursor.word(context, key)?;
-            context.not_rendered(
-                location,
-                key,
-                "rub normal-map descriptor files are not read",
-            )?;
+            // rub's normal-map descriptor file (see `descriptor`).
+            let path = path_after(cursor, context, key)?;
+            f.surface_map = Some(SurfaceMapRef {
+                path,
+                named: MapName::Normal,
+                scale: 1.0,
+            });
         }
         "specularMap" | "emissiveMap" | "opacityMap" => {
             cursor.word(context, key)?;
@@ -305,7 +306,8 @@ fn read_type(
     Ok(())
 }
 
-/// `texture`: an integer index, a descriptor `.txt`, a path, or a path + 8 numbers.
+/// `texture`: an integer index, a path (an image, or rub's descriptor
+/// `.txt`, read when textures load), or a path + 8 numbers.
 fn read_texture(
     context: &mut Context,
     cursor: &mut Cursor,
@@ -316,16 +318,7 @@ fn read_texture(
         cursor.take_numbers();
         return context.not_rendered(location, "texture <index>", "texture tables are not read");
     }
-    let path = path_after(cursor, context, "texture")?;
-    if path.path.ends_with(".txt") {
-        context.not_rendered(
-            location,
-            "texture <file>.txt",
-            "rub texture descriptor files are not read",
-        )?;
-    } else {
-        f.texture = Some(path);
-    }
+    f.texture = Some(path_after(cursor, context, "texture")?);
     if !cursor.take_numbers().is_empty() {
         context.not_rendered(
             location,

@@ -14,7 +14,9 @@ use std::collections::{BTreeSet, HashMap};
 use std::path::PathBuf;
 use std::sync::Arc;
 
+use crate::checker::Checker;
 use crate::scene::MissingAssets;
+use crate::scene::build::descriptor::{self, Descriptor};
 use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::build::{Context, paths};
 use crate::scene::error::SceneError;
@@ -83,11 +85,24 @@ pub fn load_textures(
         let mut material = spec.material;
         if used.contains(&index) {
             if let Some(path) = &spec.texture {
-                material.texture = loader.load(context, path, Role::Color)?;
+                match loader.source(context, path, Role::Color)? {
+                    Source::Image(texture) => material.texture = Some(texture),
+                    Source::Checker(checker) => material.checker = Some(checker),
+                    Source::Nothing => {}
+                }
             }
             for map in &spec.surface_maps {
-                let Some(texture) = loader.load(context, &map.path, Role::SurfaceMap)? else {
-                    continue;
+                let texture = match loader.source(context, &map.path, Role::SurfaceMap)? {
+                    Source::Image(texture) => texture,
+                    Source::Checker(_) => {
+                        context.not_rendered(
+                            map.path.location,
+                            "a checkerTexture descriptor as a normal map",
+                            "normal maps are images",
+                        )?;
+                        continue;
+                    }
+                    Source::Nothing => continue,
                 };
                 let replaced = if is_height_map(&loader.textures[texture], map.named) {
                     material
@@ -125,16 +140,67 @@ enum Role {
     SurfaceMap,
 }
 
+/// What a texture key of a material gives.
+enum Source {
+    /// An image of the texture table.
+    Image(usize),
+    /// rub's procedural checker.
+    Checker(Checker),
+    /// Nothing: a missing surface map with `--missing-assets placeholder`.
+    Nothing,
+}
+
 /// The texture table being filled, each file decoded once.
 #[derive(Default)]
 struct Loader {
     textures: Vec<Arc<Texture>>,
     cache: HashMap<PathBuf, usize>,
+    /// rub's descriptor files, each read once (by the path as written).
+    descriptors: HashMap<String, Descriptor>,
     /// Index of the placeholder checker, once a texture is missing.
     placeholder: Option<usize>,
 }
 
 impl Loader {
+    /// What the path of a texture key gives: an image, or for rub's
+    /// descriptor files (`.txt`, see `descriptor`) what the file describes.
+    fn source(
+        &mut self,
+        context: &mut Context,
+        path: &PathRef,
+        role: Role,
+    ) -> Result<Source, SceneError> {
+        if !descriptor::is_descriptor(&path.path) {
+            return Ok(self
+                .load(context, path, role)?
+                .map_or(Source::Nothing, Source::Image));
+        }
+        let described = match self.descriptors.get(&path.path) {
+            Some(described) => described.clone(),
+            None => {
+                let described = descriptor::read(context, path)?;
+                self.descriptors
+                    .insert(path.path.clone(), described.clone());
+                described
+            }
+        };
+        Ok(match described {
+            Descriptor::Checker(checker) => Source::Checker(checker),
+            Descriptor::Image(file) => {
+                let image = PathRef {
+                    path: file.to_string_lossy().into_owned(),
+                    location: path.location,
+                };
+                self.load(context, &image, role)?
+                    .map_or(Source::Nothing, Source::Image)
+            }
+            Descriptor::Missing => match role {
+                Role::Color => Source::Image(self.placeholder()),
+                Role::SurfaceMap => Source::Nothing,
+            },
+        })
+    }
+
     /// The index of the image `path` names; a missing file is an error, or
     /// with `--missing-assets placeholder` a warning and the placeholder
     /// (colour textures) or `None` (surface maps).
