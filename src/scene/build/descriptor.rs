@@ -25,7 +25,7 @@ use std::path::{Path, PathBuf};
 use crate::checker::Checker;
 use crate::color::Color;
 use crate::scene::MissingAssets;
-use crate::scene::ast::Block;
+use crate::scene::ast::{Block, Item};
 use crate::scene::build::material::PathRef;
 use crate::scene::build::{Context, Cursor, paths};
 use crate::scene::error::{Location, SceneError};
@@ -99,11 +99,7 @@ fn missing_file(
 
 /// The descriptor's block; `scene` is the scene file (image paths resolve
 /// from it).
-fn describe(
-    context: &mut Context,
-    items: &[crate::scene::ast::Item],
-    scene: &Path,
-) -> Result<Descriptor, SceneError> {
+fn describe(context: &mut Context, items: &[Item], scene: &Path) -> Result<Descriptor, SceneError> {
     let mut blocks = items.iter().filter(|item| item.block().is_some());
     let Some((block, location)) = blocks.next().and_then(|i| Some((i.block()?, i.location))) else {
         let at = items

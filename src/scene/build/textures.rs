@@ -9,6 +9,12 @@
 //! normal map unless it is greyscale (every texel with r, g and b within
 //! 2/255 of each other). A height map's scale is the number after its path
 //! (cyy's `bump path strength`), 1 by default.
+//!
+//! A path ending in `.txt` is one of rub's descriptor files (see
+//! `descriptor`): a checker, or the image to use. An image that is not
+//! found is an error at the place that names it, or with `--missing-assets
+//! placeholder` a warning there and [`Texture::placeholder`] for a colour
+//! texture, nothing for a normal or height map.
 
 use std::collections::{BTreeSet, HashMap};
 use std::path::PathBuf;
