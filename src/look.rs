@@ -15,6 +15,7 @@
 //! | `osb` | one-step-beh1nd | path tracing | unlimited (roulette) | black | never | no | reflect with 0.25 + R/2, unweighted |
 //! | `ylc` | ylc2001 | path tracing | unlimited (roulette) | background, unweighted | never | no | Schlick |
 //! | `yzc` | yuzc19 | path tracing | 11 | background, weighted | never | no | Schlick |
+//! | `cyy` | Chenyu-Yang-2000 | path tracing | 5 | background for camera rays | always, next to the area lights | yes | Schlick |
 //!
 //! "Unlimited" depths are 64 scattering vertices: Russian roulette ends
 //! paths long before, as it did in those renderers, without bias.
@@ -56,6 +57,8 @@ pub enum PointLights {
     WithoutEmitters,
     /// Never: light comes from emissive materials only.
     Never,
+    /// Always, next to the emitters (cyy's renderer adds every light).
+    Always,
 }
 
 /// Where in a pixel camera rays go.
@@ -172,6 +175,13 @@ impl Look {
         ..Look::ORIGINAL
     };
 
+    pub const CYY: Look = Look {
+        name: "cyy",
+        renderer: "Chenyu-Yang-2000/PathTracing",
+        point_lights: PointLights::Always,
+        ..Look::ORIGINAL
+    };
+
     pub const YZC: Look = Look {
         name: "yzc",
         renderer: "yuzc19/Ray-tracing-engine",
@@ -183,7 +193,7 @@ impl Look {
     };
 
     /// Every look, by name.
-    pub const ALL: [Look; 8] = [
+    pub const ALL: [Look; 9] = [
         Look::ORIGINAL,
         Look::PHYSICAL,
         Look::PA1,
@@ -192,6 +202,7 @@ impl Look {
         Look::OSB,
         Look::YLC,
         Look::YZC,
+        Look::CYY,
     ];
 
     pub fn from_name(name: &str) -> Option<Look> {
@@ -214,6 +225,7 @@ impl Look {
                     (Look::WSO, why(": the family's path tracer (W-Solaris's)"))
                 }
             }
+            Dialect::Cyy => (Look::CYY, why("")),
             _ => (Look::ORIGINAL, why(": no look of its own yet")),
         }
     }

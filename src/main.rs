@@ -28,7 +28,7 @@ enum Command {
     Compare(commands::compare::CompareArgs),
     /// Render every pair of a pairs file and measure how alike ours and theirs look.
     Lookalike(commands::lookalike::LookalikeArgs),
-    /// Convert an image to another format (8-bit output clamped, optional gamma).
+    /// Convert an image to another format (8-bit output: optional exposure, tone curve, gamma).
     Convert(commands::compare::ConvertArgs),
     /// Render at doubling sample counts and record error against time.
     Converge(commands::converge::ConvergeArgs),

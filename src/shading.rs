@@ -1,5 +1,6 @@
 //! What a surface hit means for light transport: the material, its colour
-//! (texture or constant), and normals (interpolated, normal- and bump-mapped,
+//! (a procedural checker at the world point, a texture at the hit's uv or by
+//! the material's `uv_rule`, or constant), and normals (interpolated, normal- and bump-mapped,
 //! see `surface_maps`) oriented towards the incoming ray.
 
 use crate::bsdf::{Bsdf, LobeSet, Rules};
@@ -51,10 +52,7 @@ impl<'a> Shading<'a> {
         if normal.dot(&geometric) < 0.0 {
             normal = -normal;
         }
-        let color = match material.texture.and_then(|i| scene.textures.get(i)) {
-            Some(texture) => surface_maps::texel_at(texture, hit),
-            None => material.color,
-        };
+        let color = surface_color(scene, material, hit);
         Shading {
             point: hit.point,
             material,
@@ -80,5 +78,23 @@ impl<'a> Shading<'a> {
     #[inline]
     pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
         offset_origin(&self.point, &self.geometric, direction)
+    }
+}
+
+/// The colour of `material` at `hit`: its checker at the world point, its
+/// texture at the hit's uv or where its `uv_rule` says, or its `color`.
+fn surface_color(scene: &Scene, material: &Material, hit: &WorldHit) -> Color {
+    if let Some(checker) = &material.checker {
+        return checker.color_at(&hit.point);
+    }
+    let Some(texture) = material.texture.and_then(|i| scene.textures.get(i)) else {
+        return material.color;
+    };
+    match material.uv_rule {
+        None => surface_maps::texel_at(texture, hit),
+        Some(rule) => {
+            let [a, b] = rule.coordinates(&hit.point, hit.t, hit.uv);
+            texture.lookup_rows_down(a, b)
+        }
     }
 }

@@ -93,8 +93,6 @@ fn content_facts() {
 const NOT_RENDERED: &[&str] = &[
     "textureScale",
     "textureLuminance",
-    "Func",
-    "nTexture",
     "opacity",
     "transparency",
     "transparent",
@@ -112,7 +110,6 @@ const NOT_RENDERED: &[&str] = &[
     "time1",
     "falloff",
     "lookat",
-    "SpotLight",
     "Textures",
     "Global",
     "Objects",

@@ -115,6 +115,135 @@ fn a_missing_mesh_is_an_error_naming_the_path() {
 }
 
 #[test]
+fn missing_assets_placeholder_renders_and_checks_with_a_warning_naming_the_file() {
+    let dir = temp_dir("placeholder");
+    let scene = dir.join("gone.txt");
+    std::fs::write(
+        &scene,
+        "PerspectiveCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 width 8 height 8 }\nMaterials { numMaterials 1 Material { color 1 1 1 texture texture/gone.png } }\nGroup { numObjects 2 MaterialIndex 0 Sphere { center 0 0 0 radius 1 } TriangleMesh { obj_file mesh/not_there.obj } }\n",
+    )
+    .unwrap();
+    let image = dir.join("gone.bmp");
+    let scene = scene.to_str().unwrap();
+    let render = |extra: &[&str]| {
+        let mut args = vec!["render", scene, "-o", image.to_str().unwrap(), "--quiet"];
+        args.extend_from_slice(extra);
+        pathtracer(&args)
+    };
+    assert!(!render(&[]).status.success(), "the default is an error");
+    assert!(!render(&["--missing-assets", "error"]).status.success());
+    let out = render(&["--missing-assets", "placeholder"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains(&format!(
+            "{scene}:2:59: texture 'texture/gone.png' not found"
+        )),
+        "{stderr}"
+    );
+    assert!(stderr.contains("not_there.obj"), "{stderr}");
+    assert!(image.exists());
+    let out = pathtracer(&["check", scene, "--missing-assets", "placeholder"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let out = pathtracer(&["check", scene, "--missing-assets", "maybe"]);
+    assert!(!out.status.success());
+}
+
+#[test]
+fn exposure_and_tonemap_change_8_bit_outputs_only_and_default_to_the_plain_writer() {
+    let dir = temp_dir("tonemap");
+    let render = |name: &str, extra: &[&str]| {
+        let path = dir.join(name);
+        let mut args = vec![
+            "render",
+            "testcases/smallpt.txt",
+            "-o",
+            path.to_str().unwrap(),
+            "--width",
+            "24",
+            "--height",
+            "18",
+            "--spp",
+            "4",
+            "--quiet",
+        ];
+        args.extend_from_slice(extra);
+        let out = pathtracer(&args);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        path
+    };
+    let plain = std::fs::read(render("plain.bmp", &[])).unwrap();
+    let explicit = render("explicit.bmp", &["--exposure", "0", "--tonemap", "none"]);
+    assert!(
+        plain == std::fs::read(explicit).unwrap(),
+        "the defaults are the plain writer"
+    );
+    let darker = std::fs::read(render(
+        "reinhard.bmp",
+        &["--tonemap", "reinhard", "--exposure", "-1"],
+    ))
+    .unwrap();
+    assert_eq!(darker.len(), plain.len());
+    // BMP pixel data starts at byte 54: no channel gets brighter, some darker.
+    let pairs = || plain[54..].iter().zip(&darker[54..]);
+    assert!(pairs().all(|(p, d)| d <= p));
+    assert!(pairs().any(|(p, d)| d < p));
+    // HDR output stays linear; its sidecar says how 8-bit output would encode it.
+    let hdr = render("hdr.pfm", &["--tonemap", "aces", "--exposure", "1.5"]);
+    let linear = render("linear.pfm", &[]);
+    assert!(std::fs::read(&hdr).unwrap() == std::fs::read(&linear).unwrap());
+    let sidecar = std::fs::read_to_string(dir.join("hdr.pfm.json")).unwrap();
+    assert!(
+        sidecar.contains("\"exposure\": 1.5, \"tonemap\": \"aces\""),
+        "{sidecar}"
+    );
+    assert!(sidecar.contains("\"gamma\": null"), "{sidecar}");
+    // convert applies the same encoding to a PFM.
+    let converted = dir.join("converted.bmp");
+    let out = pathtracer(&[
+        "convert",
+        linear.to_str().unwrap(),
+        converted.to_str().unwrap(),
+        "--tonemap",
+        "reinhard",
+        "--exposure=-1",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let bytes = std::fs::read(&converted).unwrap();
+    // Values of the PFM are the render's rounded to f32: a byte may move by one.
+    assert!(
+        bytes[54..]
+            .iter()
+            .zip(&darker[54..])
+            .all(|(c, d)| c.abs_diff(*d) <= 1)
+    );
+    let out = pathtracer(&[
+        "convert",
+        linear.to_str().unwrap(),
+        converted.to_str().unwrap(),
+        "--tonemap",
+        "filmic",
+    ]);
+    assert!(!out.status.success());
+}
+
+#[test]
 fn an_unknown_output_format_is_refused_before_rendering() {
     let dir = temp_dir("format");
     let out = render_smallpt(&dir.join("image.xyz"), "1", "0");

@@ -5,9 +5,13 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use pathtracer::image_io::{check_writable, read_image, read_image_encoded, write_image};
+use pathtracer::image_io::{
+    Encoding, check_writable, is_hdr, read_image, read_image_encoded, write_encoded,
+};
 use pathtracer::metrics::flip::DEFAULT_PIXELS_PER_DEGREE;
 use pathtracer::metrics::report::{Encoded, evaluate};
+
+use super::EncodingOptions;
 
 #[derive(Args)]
 pub struct CompareArgs {
@@ -77,11 +81,19 @@ pub struct ConvertArgs {
     input: PathBuf,
     /// The image to write (.bmp, .png, .pfm or .exr).
     output: PathBuf,
-    /// Gamma for 8-bit output, as `render --gamma`.
-    #[arg(long)]
-    gamma: Option<f64>,
+    /// Gamma, exposure and tone curve for 8-bit output, as `render`'s.
+    #[command(flatten)]
+    encoding: EncodingOptions,
 }
 
 pub fn convert(args: &ConvertArgs) -> Result<(), String> {
-    write_image(&args.output, &read_image(&args.input)?, args.gamma)
+    let encoding = args.encoding.encoding();
+    encoding.check()?;
+    if is_hdr(&args.output) && encoding != Encoding::default() {
+        eprintln!(
+            "warning: --gamma, --exposure and --tonemap apply to 8-bit outputs; {} stays linear",
+            args.output.display()
+        );
+    }
+    write_encoded(&args.output, &read_image(&args.input)?, &encoding)
 }

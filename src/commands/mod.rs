@@ -19,12 +19,13 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
+use pathtracer::image_io::{Encoding, Tonemap};
 use pathtracer::integrator::Integrator;
 use pathtracer::look::{Estimator, Look, PixelSampling};
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Dialect, Scene};
-use pathtracer::scene::{LoadOptions, load_scene};
+use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
 use pathtracer::world::World;
 
 #[derive(Args, Clone)]
@@ -38,6 +39,11 @@ pub struct SceneOptions {
     /// Treat warnings (unknown fields, count mismatches, ...) as errors.
     #[arg(long)]
     pub strict: bool,
+    /// A texture or mesh file that is not found: `error` (the default) or
+    /// `placeholder` (a magenta and grey checker for a colour texture, a
+    /// mesh or normal/height map left out; each with a warning).
+    #[arg(long, default_value = "error", value_parser = parse_missing_assets)]
+    pub missing_assets: MissingAssets,
 }
 
 impl SceneOptions {
@@ -46,8 +52,44 @@ impl SceneOptions {
             base: self.base.clone(),
             dialect: self.dialect,
             strict: self.strict,
+            missing_assets: self.missing_assets,
         }
     }
+}
+
+/// How 8-bit outputs (BMP, PNG) encode radiance, shared by `render` and
+/// `convert`; PFM and EXR outputs stay linear.
+#[derive(Args, Clone)]
+pub struct EncodingOptions {
+    /// Gamma for 8-bit output (2.2 for smallpt-style images; default: none,
+    /// as the PA framework writer).
+    #[arg(long)]
+    pub gamma: Option<f64>,
+    /// Exposure for 8-bit output in stops: values are multiplied by
+    /// 2^EXPOSURE before the tone curve (default 0).
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub exposure: f64,
+    /// Tone curve for 8-bit output, per channel: `none` (the default:
+    /// clipped at 1), `reinhard` (c / (1 + c)) or `aces` (Narkowicz's fit).
+    #[arg(long, default_value = "none", value_parser = parse_tonemap)]
+    pub tonemap: Tonemap,
+}
+
+impl EncodingOptions {
+    pub fn encoding(&self) -> Encoding {
+        Encoding {
+            exposure: self.exposure,
+            tonemap: self.tonemap,
+            gamma: self.gamma,
+        }
+    }
+}
+
+fn parse_tonemap(name: &str) -> Result<Tonemap, String> {
+    Tonemap::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = Tonemap::ALL.iter().map(|t| t.name()).collect();
+        format!("unknown tone curve '{name}' (one of: {})", names.join(", "))
+    })
 }
 
 /// How to sample the image, shared by `render` and `converge`.
@@ -168,6 +210,16 @@ fn parse_integrator(name: &str) -> Result<Integrator, String> {
     Integrator::from_name(name).ok_or_else(|| {
         let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.name()).collect();
         format!("unknown integrator '{name}' (one of: {})", names.join(", "))
+    })
+}
+
+fn parse_missing_assets(name: &str) -> Result<MissingAssets, String> {
+    MissingAssets::from_name(name).ok_or_else(|| {
+        let names: Vec<&str> = MissingAssets::ALL.iter().map(|m| m.name()).collect();
+        format!(
+            "unknown --missing-assets '{name}' (one of: {})",
+            names.join(", ")
+        )
     })
 }
 

@@ -8,13 +8,13 @@ use clap::Args;
 
 use pathtracer::adaptive::{StoppingRule, render_adaptive};
 use pathtracer::film::Film;
-use pathtracer::image_io::{check_writable, write_atomically, write_image};
+use pathtracer::image_io::{check_writable, is_hdr, write_atomically, write_encoded};
 use pathtracer::integrator::{Integrator, SceneView};
 use pathtracer::render::{RenderSettings, SamplingPlan, render_into};
 use pathtracer::scene::model::Scene;
 use pathtracer::world::World;
 
-use super::{SamplingOptions, default_output, load_for_render};
+use super::{EncodingOptions, SamplingOptions, default_output, load_for_render};
 
 #[derive(Args)]
 pub struct RenderArgs {
@@ -33,10 +33,8 @@ pub struct RenderArgs {
     /// Stop the whole render within this many seconds of rendering.
     #[arg(long)]
     time_budget: Option<f64>,
-    /// Gamma for 8-bit output (2.2 for smallpt-style images; default: none,
-    /// as the PA framework writer).
-    #[arg(long)]
-    gamma: Option<f64>,
+    #[command(flatten)]
+    encoding: EncodingOptions,
     /// Do not print the progress line.
     #[arg(long)]
     quiet: bool,
@@ -53,8 +51,11 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         .output
         .clone()
         .unwrap_or_else(|| default_output(&args.scene, ".bmp"));
-    // Refuse an unwritable output before the scene is read and rendered.
+    // Refuse an unwritable output or a bad encoding before the scene is
+    // read and rendered.
     check_writable(&output, 1, 1)?;
+    let encoding = args.encoding.encoding();
+    encoding.check()?;
     let scene = load_for_render(&args.scene, &args.sampling.scene)?;
     let settings = args.sampling.settings(&scene, args.spp, !args.quiet);
     check_writable(&output, settings.width as usize, settings.height as usize)?;
@@ -75,15 +76,16 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     if args.stats {
         print_phases(&scene, &world, &settings, world_seconds, stats.seconds);
     }
-    write_image(&output, &image, args.gamma)?;
+    write_encoded(&output, &image, &encoding)?;
     let pixels = (settings.width as u64 * settings.height as u64).max(1);
     if is_hdr(&output) {
-        // HDR images are measurements: say how they were made, next to them.
+        // HDR images are measurements: say how they were made, next to
+        // them, and how an 8-bit output would have encoded them.
         let mut sidecar = output.clone().into_os_string();
         sidecar.push(".json");
         let sidecar = std::path::PathBuf::from(sidecar);
         let json = format!(
-            "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}, \"light_paths\": {}, \"look\": \"{}\"}}\n",
+            "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}, \"light_paths\": {}, \"look\": \"{}\", \"gamma\": {}, \"exposure\": {}, \"tonemap\": \"{}\"}}\n",
             args.scene.display().to_string(),
             settings.width,
             settings.height,
@@ -97,6 +99,9 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
             settings.clamp.map_or("null".to_string(), |c| c.to_string()),
             settings.light_paths,
             settings.look.name,
+            encoding.gamma.map_or("null".to_string(), |g| g.to_string()),
+            encoding.exposure,
+            encoding.tonemap.name(),
         );
         write_atomically(&sidecar, json.as_bytes())?;
     }
@@ -185,9 +190,4 @@ fn print_phases(
             (_, true, true) => "on (caustics by light tracing and connections)",
         }
     );
-}
-
-fn is_hdr(path: &std::path::Path) -> bool {
-    path.extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("pfm") || e.eq_ignore_ascii_case("exr"))
 }

@@ -2,10 +2,11 @@
 
 use super::Image;
 use super::quantize::Quantizer;
+use super::tonemap::Encoding;
 
 /// Encodes `image` as a 24-bit BMP file held in memory.
-pub(super) fn encode(image: &Image, gamma: Option<f64>) -> Result<Vec<u8>, String> {
-    let quantizer = Quantizer::new(gamma)?;
+pub(super) fn encode(image: &Image, encoding: &Encoding) -> Result<Vec<u8>, String> {
+    let quantizer = Quantizer::new(encoding)?;
     // The bmp crate computes the file size in u32; refuse what would overflow it.
     let row_bytes = (image.width as u64) * 3 + (image.width as u64 % 4);
     if row_bytes * image.height as u64 + 54 > u32::MAX as u64 {

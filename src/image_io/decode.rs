@@ -6,7 +6,7 @@ use std::path::Path;
 
 use image::{DynamicImage, ImageReader, Limits};
 
-use super::{Encoding, Image, MAX_DIMENSION, MAX_PIXELS};
+use super::{Image, MAX_DIMENSION, MAX_PIXELS, PixelValues};
 use crate::color::Color;
 
 /// The largest file read: an uncompressed float RGB image at the pixel cap, plus a header.
@@ -32,7 +32,7 @@ pub(super) fn read_capped(path: &Path) -> Result<Vec<u8>, String> {
 /// Decodes BMP, PNG, JPEG, TGA or EXR bytes; 8-bit values become `v / 255`,
 /// no gamma; float values are kept. Integer samples (8 or 16 bits) are
 /// display values, float samples (EXR) linear radiance.
-pub(super) fn decode_ldr(bytes: &[u8]) -> Result<(Image, Encoding), String> {
+pub(super) fn decode_ldr(bytes: &[u8]) -> Result<(Image, PixelValues), String> {
     let mut reader = ImageReader::new(Cursor::new(bytes))
         .with_guessed_format()
         .map_err(|e| format!("cannot read: {e}"))?;
@@ -53,8 +53,8 @@ pub(super) fn decode_ldr(bytes: &[u8]) -> Result<(Image, Encoding), String> {
         ));
     }
     let encoding = match decoded {
-        DynamicImage::ImageRgb32F(_) | DynamicImage::ImageRgba32F(_) => Encoding::Linear,
-        _ => Encoding::Display,
+        DynamicImage::ImageRgb32F(_) | DynamicImage::ImageRgba32F(_) => PixelValues::Linear,
+        _ => PixelValues::Display,
     };
     let pixels = match decoded {
         // 8-bit sources are divided in f64 so that `v / 255` is exact to the last bit.

@@ -1,4 +1,5 @@
-//! Reading and writing images: BMP, PNG, PFM and EXR, written atomically.
+//! Reading and writing images: BMP, PNG, PFM and OpenEXR, written atomically;
+//! the 8-bit encoding (exposure, tone curve, gamma) of BMP and PNG.
 //!
 //! The format of a written file is chosen by its extension (case-insensitive);
 //! a read file is recognised by its content. Every writer encodes the whole file
@@ -13,6 +14,9 @@ mod exr_format;
 mod pfm;
 mod png_format;
 mod quantize;
+mod tonemap;
+
+pub use tonemap::{Encoding, Tonemap};
 
 /// Writes any bytes to a file whole or not at all (temporary file + rename).
 pub use atomic::write_file as write_atomically;
@@ -32,7 +36,7 @@ pub struct Image {
 
 /// What the values of a read image are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Encoding {
+pub enum PixelValues {
     /// Display values (8- or 16-bit BMP, PNG, JPEG, TGA), read as `v / max`:
     /// what a viewer shows, whatever gamma made them.
     Display,
@@ -78,6 +82,12 @@ impl Format {
             )),
         }
     }
+}
+
+/// Whether `path` names a format that keeps linear radiance (`.pfm`,
+/// `.exr`), which exposure, tone curve and gamma do not touch.
+pub fn is_hdr(path: &Path) -> bool {
+    matches!(Format::from_path(path), Ok(Format::Pfm | Format::Exr))
 }
 
 /// Checks, before any work is done, that an image of `width` x `height` can be
@@ -128,11 +138,17 @@ fn validate(path: &Path, image: &Image) -> Result<(), String> {
 /// scaled by 255; `.pfm` and `.exr`: linear radiance). The file appears whole
 /// or not at all.
 pub fn write_image(path: &Path, image: &Image, gamma: Option<f64>) -> Result<(), String> {
+    write_encoded(path, image, &Encoding::gamma(gamma))
+}
+
+/// [`write_image`] with an exposure and a tone curve for 8-bit output
+/// (`.bmp`, `.png`) as `encoding` says; `.pfm` and `.exr` stay linear.
+pub fn write_encoded(path: &Path, image: &Image, encoding: &Encoding) -> Result<(), String> {
     let format = Format::from_path(path)?;
     validate(path, image)?;
     let bytes = match format {
-        Format::Bmp => bmp_format::encode(image, gamma),
-        Format::Png => png_format::encode(image, gamma),
+        Format::Bmp => bmp_format::encode(image, encoding),
+        Format::Png => png_format::encode(image, encoding),
         Format::Pfm => Ok(pfm::encode(image)),
         Format::Exr => exr_format::encode(image),
     }
@@ -150,10 +166,10 @@ pub fn read_image(path: &Path) -> Result<Image, String> {
 }
 
 /// [`read_image`], and whether the file held display values or linear radiance.
-pub fn read_image_encoded(path: &Path) -> Result<(Image, Encoding), String> {
+pub fn read_image_encoded(path: &Path) -> Result<(Image, PixelValues), String> {
     let bytes = decode::read_capped(path)?;
     let result = if pfm::is_pfm(&bytes) {
-        pfm::decode(&bytes).map(|image| (image, Encoding::Linear))
+        pfm::decode(&bytes).map(|image| (image, PixelValues::Linear))
     } else {
         decode::decode_ldr(&bytes)
     };

@@ -5,10 +5,11 @@ use image::{ExtendedColorType, ImageEncoder};
 
 use super::Image;
 use super::quantize::Quantizer;
+use super::tonemap::Encoding;
 
 /// Encodes `image` as an 8-bit RGB PNG file held in memory.
-pub(super) fn encode(image: &Image, gamma: Option<f64>) -> Result<Vec<u8>, String> {
-    let quantizer = Quantizer::new(gamma)?;
+pub(super) fn encode(image: &Image, encoding: &Encoding) -> Result<Vec<u8>, String> {
+    let quantizer = Quantizer::new(encoding)?;
     let samples: Vec<u8> = image
         .pixels
         .iter()

@@ -99,6 +99,50 @@ fn bmp_and_png_store_the_same_bytes_with_gamma() {
 }
 
 #[test]
+fn exposure_and_tone_curve_apply_to_8_bit_outputs_only() {
+    let directory = ScratchDirectory::new("tonemap");
+    let image = Image {
+        width: 3,
+        height: 1,
+        pixels: vec![
+            Color::gray(0.5),
+            Color::gray(1.5),
+            Color::new(3.0, 0.0, 0.25),
+        ],
+    };
+    let encoding = Encoding {
+        exposure: 1.0,
+        tonemap: Tonemap::Reinhard,
+        gamma: None,
+    };
+    write_encoded(&directory.join("t.png"), &image, &encoding).unwrap();
+    let read = read_image(&directory.join("t.png")).unwrap();
+    // 2 * 0.5 = 1 -> 1/2; 2 * 1.5 = 3 -> 3/4; (6, 0, 0.5) -> (6/7, 0, 1/3).
+    let byte = |c: f64| (c * 255.0) as u8 as f64 / 255.0;
+    assert_eq!(read.pixels[0], Color::gray(byte(0.5)));
+    assert_eq!(read.pixels[1], Color::gray(byte(0.75)));
+    assert_eq!(
+        read.pixels[2],
+        Color::new(byte(6.0 / 7.0), 0.0, byte(1.0 / 3.0))
+    );
+    for hdr in ["t.pfm", "t.exr"] {
+        write_encoded(&directory.join(hdr), &image, &encoding).unwrap();
+        assert_eq!(
+            read_image(&directory.join(hdr)).unwrap(),
+            image,
+            "{hdr} stays linear"
+        );
+        assert!(is_hdr(&directory.join(hdr)));
+    }
+    assert!(!is_hdr(&directory.join("t.bmp")));
+    let bad = Encoding {
+        exposure: f64::NAN,
+        ..encoding
+    };
+    assert!(write_encoded(&directory.join("bad.bmp"), &image, &bad).is_err());
+}
+
+#[test]
 fn pfm_round_trip_is_exact_including_hdr_and_orientation() {
     let directory = ScratchDirectory::new("pfm-round-trip");
     let path = directory.join("radiance.pfm");
@@ -143,7 +187,7 @@ fn display_bytes_survive_bmp_and_png_files_and_files_say_their_encoding() {
         let path = directory.join(name);
         bytes.write(&path).unwrap();
         let (image, encoding) = read_image_encoded(&path).unwrap();
-        assert_eq!(encoding, Encoding::Display, "{name}");
+        assert_eq!(encoding, PixelValues::Display, "{name}");
         assert_eq!(DisplayImage::from_image(&image), bytes, "{name}");
     }
     for name in ["radiance.pfm", "radiance.exr"] {
@@ -151,7 +195,7 @@ fn display_bytes_survive_bmp_and_png_files_and_files_say_their_encoding() {
         write_image(&path, &gradient(), None).unwrap();
         assert_eq!(
             read_image_encoded(&path).unwrap().1,
-            Encoding::Linear,
+            PixelValues::Linear,
             "{name}"
         );
     }

@@ -1,11 +1,14 @@
-//! The point and directional lights of PA1 scenes, added at every vertex.
+//! The point, spot and directional lights of PA1 (and cyy) scenes, added at
+//! every vertex.
 //!
 //! The course framework shades a diffuse surface with `albedo * color *
 //! max(0, n . l)` and no distance falloff; the port adds exactly that, with
 //! a shadow ray: a light delivers the irradiance `pi * color` (falling off
 //! with the cosine), which the BSDF turns into radiance, `pi * color *
 //! f(wo, l) cos`. For a Lambert surface that is the framework's term; a
-//! Phong lobe adds its highlight, a glossy conductor its reflection.
+//! Phong lobe adds its highlight, a glossy conductor its reflection. A spot
+//! light is a point light times `max(0, cos)^exponent` of the angle between
+//! its direction and the way to the lit point (cyy's law, no cut-off).
 
 use std::f64::consts::PI;
 
@@ -17,10 +20,14 @@ use crate::scene::model::{Light, Scene};
 use crate::shading::Shading;
 use crate::world::World;
 
-/// The lights that are sampled by shadow rays (see `SceneView::direct_lights`).
+/// The lights that are sampled by shadow rays (see `SceneView::direct_lights`),
+/// by the look's rule: in scenes without emitters (the PA1 scenes), always
+/// (cyy's renderer adds every light), or never.
 pub fn direct_lights(scene: &Scene, rule: PointLights) -> &[Light] {
-    if rule == PointLights::Never {
-        return &[];
+    match rule {
+        PointLights::Never => return &[],
+        PointLights::Always => return &scene.lights,
+        PointLights::WithoutEmitters => {}
     }
     let mut has_emitter = false;
     scene.root.for_each_leaf(&mut |leaf| {
@@ -44,6 +51,21 @@ pub fn direct(world: &World, lights: &[Light], at: &Shading, bsdf: &Bsdf, wo: &V
                     continue;
                 }
                 (offset / distance, distance, *color)
+            }
+            Light::Spot {
+                position,
+                direction,
+                color,
+                exponent,
+            } => {
+                let offset = position - at.point;
+                let distance = offset.norm();
+                if distance <= 0.0 {
+                    continue;
+                }
+                let to_light = offset / distance;
+                let cone = direction.dot(&-to_light).max(0.0).powf(*exponent);
+                (to_light, distance, *color * cone)
             }
             Light::Directional { direction, color } => {
                 let Some(d) = (-direction).try_normalize(1e-12) else {
@@ -124,5 +146,65 @@ mod tests {
         // wo is the mirror of the light direction: cos(alpha) = 1.
         let highlight = ks * (n + 2.0) / 2.0 * 0.8 * 2.0;
         assert!((with_highlight.r - diffuse_only.r - highlight).abs() < 1e-9);
+    }
+
+    /// A spot light is the point light times max(0, cos)^exponent about its
+    /// axis, with no other cut-off.
+    #[test]
+    fn spot_lights_fall_off_as_a_power_of_the_cosine_about_their_axis() {
+        let world = World::from_primitives(Vec::new());
+        let material = Material::default();
+        let normal = Vec3::z();
+        let at = Shading {
+            point: Point3::zeros(),
+            material: &material,
+            material_index: 0,
+            color: Color::WHITE,
+            geometric: normal,
+            normal,
+            entering: true,
+        };
+        let mut set = LobeSet::default();
+        let lambert = Lambert {
+            albedo: Color::WHITE,
+        };
+        set.push(Lobe::Lambert(lambert), 1.0, false);
+        let wo = Vec3::z();
+        let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, wo.z, Rules::default());
+        let position = Point3::new(0.0, 0.0, 2.0);
+        let lit = |direction: Vec3, exponent: f64| {
+            let spot = Light::Spot {
+                position,
+                direction: direction.normalize(),
+                color: Color::gray(3.0),
+                exponent,
+            };
+            direct(&world, &[spot], &at, &bsdf, &wo).r
+        };
+        let point = direct(
+            &world,
+            &[Light::Point {
+                position,
+                color: Color::gray(3.0),
+            }],
+            &at,
+            &bsdf,
+            &wo,
+        )
+        .r;
+        assert!(
+            (point - 3.0).abs() < 1e-12,
+            "albedo * colour * cos: {point}"
+        );
+        // On the axis: the point light.
+        assert!((lit(-Vec3::z(), 20.0) - point).abs() < 1e-12);
+        // 60 degrees off the axis: cos^2 = 1/4.
+        let tilted = Vec3::new(3f64.sqrt(), 0.0, -1.0);
+        assert!((lit(tilted, 2.0) - point / 4.0).abs() < 1e-12);
+        // Exponent 0: a point light over the whole sphere (as cyy's pow(0, 0)).
+        assert!((lit(Vec3::z(), 0.0) - point).abs() < 1e-12);
+        // Pointing away: dark.
+        assert_eq!(lit(Vec3::z(), 1.0), 0.0);
+        assert_eq!(lit(Vec3::x(), 1.0), 0.0);
     }
 }

@@ -38,6 +38,15 @@ pub fn radiance(view: &SceneView, ray: Ray) -> Color {
                 Some(l) => (l, *color),
                 None => continue,
             },
+            Light::Spot {
+                position,
+                direction,
+                color,
+                exponent,
+            } => match (position - at.point).try_normalize(1e-300) {
+                Some(l) => (l, *color * direction.dot(&-l).max(0.0).powf(*exponent)),
+                None => continue,
+            },
             Light::Disk { .. } | Light::Area { .. } => continue,
         };
         let cos = n.dot(&l);

@@ -14,7 +14,7 @@ use super::error_map::ErrorMap;
 use super::flip::flip;
 use super::lookalike::{Lookalike, lookalike};
 use super::{Comparison, compare, json_number};
-use crate::image_io::{DisplayImage, Encoding, Image};
+use crate::image_io::{DisplayImage, Image, PixelValues};
 
 /// FLIP's mean, or why there is none.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -50,7 +50,7 @@ pub struct Evaluation {
 #[derive(Clone, Copy, Debug)]
 pub struct Encoded<'a> {
     pub image: &'a Image,
-    pub encoding: Encoding,
+    pub encoding: PixelValues,
 }
 
 /// Compares `test` with `reference`, FLIP seen at `pixels_per_degree`.
@@ -75,7 +75,8 @@ pub fn evaluate(
         });
     }
     let pixels = compare(test.image, reference.image)?;
-    let display = test.encoding == Encoding::Display && reference.encoding == Encoding::Display;
+    let display =
+        test.encoding == PixelValues::Display && reference.encoding == PixelValues::Display;
     let (flip_mean, error_map) = if display {
         let map = flip(&test_bytes, &reference_bytes, pixels_per_degree)?;
         let mean = FlipMean::Value {
@@ -180,7 +181,7 @@ mod tests {
     fn display(image: &Image) -> Encoded<'_> {
         Encoded {
             image,
-            encoding: Encoding::Display,
+            encoding: PixelValues::Display,
         }
     }
 
@@ -208,7 +209,7 @@ mod tests {
         let b = image(8, 8, |i| if i == 0 { 0.75 } else { 0.5 });
         let linear = Encoded {
             image: &b,
-            encoding: Encoding::Linear,
+            encoding: PixelValues::Linear,
         };
         let evaluation = evaluate(display(&a), linear, 67.0).unwrap();
         assert_eq!(evaluation.report.flip, FlipMean::LinearImage);

@@ -25,6 +25,40 @@ pub struct LoadOptions {
     pub dialect: Option<Dialect>,
     /// Turn warnings into errors (`--strict`).
     pub strict: bool,
+    /// What a texture or mesh file that is not found becomes (`--missing-assets`).
+    pub missing_assets: MissingAssets,
+}
+
+/// What a scene's missing texture or mesh file becomes.
+///
+/// With [`MissingAssets::Placeholder`] a missing colour texture is the
+/// 8x8 magenta and grey checker of [`crate::texture::Texture::placeholder`],
+/// a missing normal or height map is left out (a checker would tilt the
+/// normals at random), a missing mesh is left out of the scene; each with a
+/// warning at the place that names the file. A missing `.mtl` (and a
+/// missing image of a `.mtl`) is a warning either way.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MissingAssets {
+    /// A missing file is an error at the place that names it.
+    #[default]
+    Error,
+    /// A missing file is replaced or left out, with a warning.
+    Placeholder,
+}
+
+impl MissingAssets {
+    pub const ALL: [MissingAssets; 2] = [MissingAssets::Error, MissingAssets::Placeholder];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            MissingAssets::Error => "error",
+            MissingAssets::Placeholder => "placeholder",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<MissingAssets> {
+        MissingAssets::ALL.into_iter().find(|m| m.name() == name)
+    }
 }
 
 /// Reads, parses and builds a scene file. Bytes that are not UTF-8 are decoded lossily.

@@ -10,6 +10,12 @@ use crate::math::{Matrix, Point3, Vec3};
 use crate::scene::error::Diagnostic;
 use crate::texture::Texture;
 
+mod material;
+
+pub use material::{
+    AngularWeights, Bump, Coat, ConductorFresnel, DiffuseModel, MIN_ROUGHNESS, Material, Phong,
+};
+
 /// A fully built scene.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -183,143 +189,6 @@ pub struct CameraDesc {
     pub lens_radius: f64,
 }
 
-/// One normalised material: the weights of the original's three lobes
-/// (`diffuse + specular + refract`, normally 1), what each of them is, and
-/// the lobes that some dialects add on top (see `docs/materials.md` for the
-/// table from dialect fields to these).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Material {
-    pub color: Color,
-    pub emission: Color,
-    pub diffuse: f64,
-    pub specular: f64,
-    pub refract: f64,
-    pub ior: f64,
-    /// Index into `Scene::textures`.
-    pub texture: Option<usize>,
-    /// Index into `Scene::textures`: a tangent-space normal map.
-    pub normal_map: Option<usize>,
-    /// A greyscale height map (bump map).
-    pub bump: Option<Bump>,
-    /// GGX roughness `alpha` of the specular and refract lobes: 0 is a
-    /// perfect mirror and smooth glass, larger is a rough conductor and a
-    /// rough dielectric.
-    pub roughness: f64,
-    /// What the diffuse weight scatters by.
-    pub diffuse_model: DiffuseModel,
-    /// The Fresnel term of the specular weight (a conductor).
-    pub conductor_fresnel: ConductorFresnel,
-    /// A Phong lobe added on top of the weights (PA1 `specularColor` and
-    /// `shininess`).
-    pub phong: Option<Phong>,
-    /// A GGX specular coat added on top of the weights (`glossy`, bow's
-    /// `GlossyMaterial`).
-    pub coat: Option<Coat>,
-    /// Weights of the specular and refract lobes that depend on the angle of
-    /// incidence (cav's `Fresnel { fbase fscale power }`); they replace
-    /// `specular` and `refract`, and the diffuse weight is the rest.
-    pub angular_weights: Option<AngularWeights>,
-}
-
-impl Material {
-    /// White, fully diffuse, not emitting, IOR 1.5.
-    pub const DEFAULT: Material = Material {
-        color: Color::WHITE,
-        emission: Color::BLACK,
-        diffuse: 1.0,
-        specular: 0.0,
-        refract: 0.0,
-        ior: 1.5,
-        texture: None,
-        normal_map: None,
-        bump: None,
-        roughness: 0.0,
-        diffuse_model: DiffuseModel::Lambert,
-        conductor_fresnel: ConductorFresnel::Constant,
-        phong: None,
-        coat: None,
-        angular_weights: None,
-    };
-
-    /// Whether some lobe of the material is a perfect mirror or smooth glass
-    /// (what light subpaths for caustics go through).
-    pub fn has_delta_lobe(&self) -> bool {
-        let smooth = self.roughness < MIN_ROUGHNESS;
-        (smooth && (self.specular > 0.0 || self.refract > 0.0 || self.angular_weights.is_some()))
-            || self.coat.is_some_and(|c| c.alpha < MIN_ROUGHNESS)
-    }
-}
-
-impl Default for Material {
-    fn default() -> Self {
-        Material::DEFAULT
-    }
-}
-
-/// Below this GGX `alpha`, a microfacet lobe is treated as perfectly smooth
-/// (a delta lobe): its distribution is too narrow to evaluate in floating point.
-pub const MIN_ROUGHNESS: f64 = 1e-3;
-
-/// A height map: the grey value `g` of the texture (in [0, 1]) lifts the
-/// surface along its normal by `scale * (2 g - 1)` world units.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Bump {
-    /// Index into `Scene::textures`.
-    pub texture: usize,
-    pub scale: f64,
-}
-
-/// What the diffuse weight of a material scatters by.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum DiffuseModel {
-    /// Lambert: `color / pi`.
-    Lambert,
-    /// rub's Cook-Torrance (`cookTorrence a F0 x`): GGX with `alpha`, a
-    /// Schlick Fresnel term from the scalar `f0`, and the Schlick-Smith
-    /// shadowing with `k = (alpha + 1)^2 / 8`, times the colour.
-    CookTorrance { alpha: f64, f0: f64 },
-}
-
-/// The Fresnel term of a conductor.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ConductorFresnel {
-    /// The colour itself at every angle (the coursework metals, and
-    /// Mitsuba's conductor of material `none`).
-    Constant,
-    /// Schlick's approximation from the colour as the reflectance at normal
-    /// incidence.
-    Schlick,
-}
-
-/// A Phong lobe, energy-normalised: `color (n + 2) / (2 pi) cos^n(alpha)`,
-/// alpha the angle between the reflected direction and the light.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Phong {
-    pub color: Color,
-    pub exponent: f64,
-}
-
-/// A conductor lobe added on top of the weights, with its own colour: a
-/// GGX coat (`alpha`), or a mirror at `alpha` 0.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Coat {
-    pub alpha: f64,
-    /// Reflectance (constant Fresnel) or reflectance at normal incidence (Schlick).
-    pub color: Color,
-    pub fresnel: ConductorFresnel,
-}
-
-/// cav's angle-dependent weights: reflection `base + scale (1 - cos)^power`
-/// from outside (inside a dielectric the term is scaled up so that it reaches
-/// `base + scale` at the critical angle; beyond it everything reflects),
-/// refraction `base + scale` minus that, diffuse the rest.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct AngularWeights {
-    pub base: f64,
-    pub scale: f64,
-    pub power: f64,
-}
-
 /// Lights of the PA1 and coursework dialects (besides emissive materials).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Light {
@@ -327,14 +196,25 @@ pub enum Light {
     Point { position: Point3, color: Color },
     /// Irradiance `color` arriving along `direction`.
     Directional { direction: Vec3, color: Color },
-    /// A one-sided disk emitting radiance `color` towards `normal`.
+    /// A point light that shines towards `direction` (unit): radiant
+    /// intensity `color * max(0, cos)^exponent`, the cosine of the angle
+    /// between `direction` and the way to the lit point (cyy's `SpotLight`).
+    Spot {
+        position: Point3,
+        direction: Vec3,
+        color: Color,
+        exponent: f64,
+    },
+    /// A disk facing `normal` of radiant power `color` (the scene builder
+    /// makes it emitting geometry).
     Disk {
         center: Point3,
         normal: Vec3,
         radius: f64,
         color: Color,
     },
-    /// A parallelogram `corner + s*edge_u + t*edge_v` emitting radiance `color`.
+    /// A parallelogram `corner + s*edge_u + t*edge_v` emitting radiance
+    /// `color` (the scene builder makes it emitting geometry).
     Area {
         corner: Point3,
         edge_u: Vec3,

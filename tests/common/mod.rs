@@ -48,6 +48,15 @@ pub fn corpus(shared: &Path) -> Vec<(PathBuf, PathBuf)> {
     {
         scenes.push((path, shared.to_path_buf()));
     }
+    scenes.extend(coursework(shared, "complete"));
+    scenes
+}
+
+/// (scene file, base folder) of every coursework scene whose MANIFEST.md
+/// status starts with `status` ("complete", or "missing" for the scenes
+/// that name a file the folder does not have).
+pub fn coursework(shared: &Path, status: &str) -> Vec<(PathBuf, PathBuf)> {
+    let mut scenes = Vec::new();
     let coursework = shared.join("reference/coursework");
     let mut repos: Vec<_> = std::fs::read_dir(&coursework)
         .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
@@ -65,8 +74,8 @@ pub fn corpus(shared: &Path) -> Vec<(PathBuf, PathBuf)> {
                 base = repo.join(folder);
             }
             let cells: Vec<&str> = line.split('|').map(str::trim).collect();
-            if let [_, file, status, ..] = cells.as_slice()
-                && status.starts_with("complete")
+            if let [_, file, found, ..] = cells.as_slice()
+                && found.starts_with(status)
                 && file.starts_with('`')
             {
                 scenes.push((repo.join(file.trim_matches('`')), base.clone()));

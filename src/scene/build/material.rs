@@ -7,6 +7,7 @@ use crate::scene::build::weights::{Fields, Kind, preset, resolve};
 use crate::scene::build::{Context, Cursor};
 use crate::scene::error::{Location, SceneError};
 use crate::scene::model::{AngularWeights, Dialect, Material};
+use crate::uv_rule::UvRule;
 
 /// A path written in the file, with where it was written.
 #[derive(Clone, Debug, PartialEq)]
@@ -217,12 +218,13 @@ fn read_field(
             f.surface_map = Some(SurfaceMapRef { path, named, scale });
         }
         "nTexture" => {
-            cursor.word(context, key)?;
-            context.not_rendered(
-                location,
-                key,
-                "rub normal-map descriptor files are not read",
-            )?;
+            // rub's normal-map descriptor file (see `descriptor`).
+            let path = path_after(cursor, context, key)?;
+            f.surface_map = Some(SurfaceMapRef {
+                path,
+                named: MapName::Normal,
+                scale: 1.0,
+            });
         }
         "specularMap" | "emissiveMap" | "opacityMap" => {
             cursor.word(context, key)?;
@@ -236,7 +238,19 @@ fn read_field(
                 "no dispersion (one index for all wavelengths)",
             )?;
         }
-        "textureScale" | "textureLuminance" | "Func" => {
+        "Func" => {
+            let n = cursor.integer(context, key)?;
+            f.uv_rule = UvRule::from_func(n);
+            if f.uv_rule.is_none() && n != 0 {
+                context.warn(
+                    location,
+                    format!(
+                        "'Func {n}' is not one of afb's texture rules (1 to 7): the shape's uv"
+                    ),
+                )?;
+            }
+        }
+        "textureScale" | "textureLuminance" => {
             cursor.take_numbers();
             context.not_rendered(location, key, "this texture convention is not implemented")?;
         }
@@ -292,7 +306,8 @@ fn read_type(
     Ok(())
 }
 
-/// `texture`: an integer index, a descriptor `.txt`, a path, or a path + 8 numbers.
+/// `texture`: an integer index, a path (an image, or rub's descriptor
+/// `.txt`, read when textures load), or a path + 8 numbers.
 fn read_texture(
     context: &mut Context,
     cursor: &mut Cursor,
@@ -303,16 +318,7 @@ fn read_texture(
         cursor.take_numbers();
         return context.not_rendered(location, "texture <index>", "texture tables are not read");
     }
-    let path = path_after(cursor, context, "texture")?;
-    if path.path.ends_with(".txt") {
-        context.not_rendered(
-            location,
-            "texture <file>.txt",
-            "rub texture descriptor files are not read",
-        )?;
-    } else {
-        f.texture = Some(path);
-    }
+    f.texture = Some(path_after(cursor, context, "texture")?);
     if !cursor.take_numbers().is_empty() {
         context.not_rendered(
             location,

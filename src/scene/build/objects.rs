@@ -3,6 +3,7 @@
 use nalgebra::Rotation3;
 
 use crate::math::{Matrix, Vec3};
+use crate::scene::MissingAssets;
 use crate::scene::ast::{Block, ItemKind};
 use crate::scene::build::meshes::{MaterialChoice, Meshes};
 use crate::scene::build::shapes::{Fields, build_shape};
@@ -155,7 +156,8 @@ impl ObjectBuilder {
     /// `normalInterpolation`) asks for interpolated normals also when it has
     /// none, which are then area-weighted vertex normals computed once per
     /// file (see `geometry::mesh`). Without either, triangles are flat.
-    /// The file's `.mtl` materials apply as `meshes` says.
+    /// The file's `.mtl` materials apply as `meshes` says. A missing file
+    /// is an error, or an empty group with `--missing-assets placeholder`.
     fn mesh(
         &mut self,
         context: &mut Context,
@@ -182,15 +184,21 @@ impl ObjectBuilder {
         let Some((relative, at)) = file else {
             return Err(context.error(location, format!("{} needs 'obj_file'", block.name)));
         };
-        let path = paths::resolve(relative, context.file, context.options).map_err(|tried| {
-            context.error(
-                at,
-                format!(
+        let path = match paths::resolve(relative, context.file, context.options) {
+            Ok(path) => path,
+            Err(tried) => {
+                let missing = format!(
                     "mesh '{relative}' not found (tried {})",
                     paths::describe_tried(&tried)
-                ),
-            )
-        })?;
+                );
+                if context.options.missing_assets == MissingAssets::Error {
+                    return Err(context.error(at, missing));
+                }
+                // --missing-assets placeholder: the mesh is left out.
+                context.warn(at, format!("{missing}: left out"))?;
+                return Ok(Object::Group(Vec::new()));
+            }
+        };
         let instance = self.meshes.instance(context, &path, at, self.chosen)?;
         Ok(Object::Mesh {
             mesh: instance.mesh,

@@ -9,11 +9,20 @@
 //! normal map unless it is greyscale (every texel with r, g and b within
 //! 2/255 of each other). A height map's scale is the number after its path
 //! (cyy's `bump path strength`), 1 by default.
+//!
+//! A path ending in `.txt` is one of rub's descriptor files (see
+//! `descriptor`): a checker, or the image to use. An image that is not
+//! found is an error at the place that names it, or with `--missing-assets
+//! placeholder` a warning there and [`Texture::placeholder`] for a colour
+//! texture, nothing for a normal or height map.
 
 use std::collections::{BTreeSet, HashMap};
 use std::path::PathBuf;
 use std::sync::Arc;
 
+use crate::checker::Checker;
+use crate::scene::MissingAssets;
+use crate::scene::build::descriptor::{self, Descriptor};
 use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::build::{Context, paths};
 use crate::scene::error::SceneError;
@@ -76,18 +85,32 @@ pub fn load_textures(
     root.for_each_leaf(&mut |leaf| {
         used.extend(leaf.materials());
     });
-    let mut textures = Vec::new();
-    let mut cache: HashMap<PathBuf, usize> = HashMap::new();
+    let mut loader = Loader::default();
     let mut materials = Vec::new();
     for (index, spec) in specs.into_iter().enumerate() {
         let mut material = spec.material;
         if used.contains(&index) {
             if let Some(path) = &spec.texture {
-                material.texture = Some(load(context, path, &mut cache, &mut textures)?);
+                match loader.source(context, path, Role::Color)? {
+                    Source::Image(texture) => material.texture = Some(texture),
+                    Source::Checker(checker) => material.checker = Some(checker),
+                    Source::Nothing => {}
+                }
             }
             for map in &spec.surface_maps {
-                let texture = load(context, &map.path, &mut cache, &mut textures)?;
-                let replaced = if is_height_map(&textures[texture], map.named) {
+                let texture = match loader.source(context, &map.path, Role::SurfaceMap)? {
+                    Source::Image(texture) => texture,
+                    Source::Checker(_) => {
+                        context.not_rendered(
+                            map.path.location,
+                            "a checkerTexture descriptor as a normal map",
+                            "normal maps are images",
+                        )?;
+                        continue;
+                    }
+                    Source::Nothing => continue,
+                };
+                let replaced = if is_height_map(&loader.textures[texture], map.named) {
                     material
                         .bump
                         .replace(Bump {
@@ -111,7 +134,143 @@ pub fn load_textures(
         }
         materials.push(material);
     }
-    Ok((materials, textures))
+    Ok((materials, loader.textures))
+}
+
+/// What a material uses an image for (decides what a missing one becomes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Role {
+    /// A colour texture: the placeholder checker.
+    Color,
+    /// A normal or height map: left out.
+    SurfaceMap,
+}
+
+/// What a texture key of a material gives.
+enum Source {
+    /// An image of the texture table.
+    Image(usize),
+    /// rub's procedural checker.
+    Checker(Checker),
+    /// Nothing: a missing surface map with `--missing-assets placeholder`.
+    Nothing,
+}
+
+/// The texture table being filled, each file decoded once.
+#[derive(Default)]
+struct Loader {
+    textures: Vec<Arc<Texture>>,
+    cache: HashMap<PathBuf, usize>,
+    /// rub's descriptor files, each read once (by the path as written).
+    descriptors: HashMap<String, Descriptor>,
+    /// Index of the placeholder checker, once a texture is missing.
+    placeholder: Option<usize>,
+}
+
+impl Loader {
+    /// What the path of a texture key gives: an image, or for rub's
+    /// descriptor files (`.txt`, see `descriptor`) what the file describes.
+    fn source(
+        &mut self,
+        context: &mut Context,
+        path: &PathRef,
+        role: Role,
+    ) -> Result<Source, SceneError> {
+        if !descriptor::is_descriptor(&path.path) {
+            return Ok(self
+                .load(context, path, role)?
+                .map_or(Source::Nothing, Source::Image));
+        }
+        let described = match self.descriptors.get(&path.path) {
+            Some(described) => described.clone(),
+            None => {
+                let described = descriptor::read(context, path)?;
+                self.descriptors
+                    .insert(path.path.clone(), described.clone());
+                described
+            }
+        };
+        Ok(match described {
+            Descriptor::Checker(checker) => Source::Checker(checker),
+            Descriptor::Image(file) => {
+                let image = PathRef {
+                    path: file.to_string_lossy().into_owned(),
+                    location: path.location,
+                };
+                self.load(context, &image, role)?
+                    .map_or(Source::Nothing, Source::Image)
+            }
+            Descriptor::Missing => match role {
+                Role::Color => Source::Image(self.placeholder()),
+                Role::SurfaceMap => Source::Nothing,
+            },
+        })
+    }
+
+    /// The index of the image `path` names; a missing file is an error, or
+    /// with `--missing-assets placeholder` a warning and the placeholder
+    /// (colour textures) or `None` (surface maps).
+    fn load(
+        &mut self,
+        context: &mut Context,
+        path: &PathRef,
+        role: Role,
+    ) -> Result<Option<usize>, SceneError> {
+        let file = match paths::resolve(&path.path, context.file, context.options) {
+            Ok(file) => file,
+            Err(tried) => {
+                let missing = format!(
+                    "texture '{}' not found (tried {})",
+                    path.path,
+                    paths::describe_tried(&tried)
+                );
+                if context.options.missing_assets == MissingAssets::Error {
+                    return Err(context.error(path.location, missing));
+                }
+                return match role {
+                    Role::Color => {
+                        context.warn(
+                            path.location,
+                            format!("{missing}: the placeholder checker instead"),
+                        )?;
+                        Ok(Some(self.placeholder()))
+                    }
+                    Role::SurfaceMap => {
+                        context.warn(path.location, format!("{missing}: left out"))?;
+                        Ok(None)
+                    }
+                };
+            }
+        };
+        if let Some(&index) = self.cache.get(&file) {
+            return Ok(Some(index));
+        }
+        let texture = read_image(&file).map_err(|e| {
+            context.error(
+                path.location,
+                format!("cannot read texture '{}': {e}", file.display()),
+            )
+        })?;
+        let index = self.push(texture);
+        self.cache.insert(file, index);
+        Ok(Some(index))
+    }
+
+    fn push(&mut self, texture: Texture) -> usize {
+        self.textures.push(Arc::new(texture));
+        self.textures.len() - 1
+    }
+
+    fn placeholder(&mut self) -> usize {
+        match self.placeholder {
+            Some(index) => index,
+            None => {
+                let index = self.push(Texture::placeholder());
+                self.placeholder = Some(index);
+                index
+            }
+        }
+    }
 }
 
 /// Whether the image named by a key of kind `named` is read as a height map
@@ -146,37 +305,6 @@ fn looks_like_normal_map(texture: &Texture) -> bool {
     }
     let [r, g, b] = sum.map(|s| s / texture.texels.len() as f64);
     b >= 0.6 && (r - 0.5).abs() <= 0.1 && (g - 0.5).abs() <= 0.1
-}
-
-fn load(
-    context: &mut Context,
-    path: &PathRef,
-    cache: &mut HashMap<PathBuf, usize>,
-    textures: &mut Vec<Arc<Texture>>,
-) -> Result<usize, SceneError> {
-    let file = paths::resolve(&path.path, context.file, context.options).map_err(|tried| {
-        context.error(
-            path.location,
-            format!(
-                "texture '{}' not found (tried {})",
-                path.path,
-                paths::describe_tried(&tried)
-            ),
-        )
-    })?;
-    if let Some(&index) = cache.get(&file) {
-        return Ok(index);
-    }
-    let texture = read_image(&file).map_err(|e| {
-        context.error(
-            path.location,
-            format!("cannot read texture '{}': {e}", file.display()),
-        )
-    })?;
-    textures.push(Arc::new(texture));
-    let index = textures.len() - 1;
-    cache.insert(file, index);
-    Ok(index)
 }
 
 /// Decodes an image into linear [0, 1] texels (no gamma conversion).

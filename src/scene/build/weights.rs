@@ -7,6 +7,7 @@ use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::build::textures::SurfaceMapRef;
 use crate::scene::error::{Location, SceneError};
 use crate::scene::model::{AngularWeights, Dialect, Material};
+use crate::uv_rule::UvRule;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Kind {
@@ -78,6 +79,7 @@ pub struct Fields {
     pub cook_torrance: Option<(f64, f64)>,
     pub angular: Option<AngularWeights>,
     pub texture: Option<PathRef>,
+    pub uv_rule: Option<UvRule>,
     pub surface_map: Option<SurfaceMapRef>,
 }
 
@@ -178,6 +180,7 @@ pub fn resolve(
         specular: weights[1],
         refract: weights[2],
         ior,
+        uv_rule: f.uv_rule,
         ..Material::DEFAULT
     };
     add_lobes(context, &f, name, specular_is_emission, &mut material)?;
