@@ -88,7 +88,11 @@ pub fn render_into(
 ) -> Result<RenderStats, String> {
     let width = film.width;
     let height = film.height;
-    let camera = Camera::new(&scene.camera, width as u32, height as u32);
+    let camera = Camera::new(
+        &settings.look.camera(&scene.camera),
+        width as u32,
+        height as u32,
+    );
     let mut view = SceneView::with_look(scene, world, settings.look);
     view.max_depth = settings.max_depth;
     view.camera = Some(camera.clone());
