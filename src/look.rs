@@ -20,6 +20,8 @@
 //! "Unlimited" depths are 64 scattering vertices: Russian roulette ends
 //! paths long before, as it did in those renderers, without bias.
 
+use std::sync::Arc;
+
 use crate::bsdf::DielectricFresnel;
 use crate::scene::model::{CameraDesc, Dialect, FovAxis, Scene};
 
@@ -70,6 +72,15 @@ pub enum PixelSampling {
     Centre,
 }
 
+/// Which image row a texture coordinate v reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TextureRows {
+    /// Row (1 - v) h: v = 0 is the bottom of the image (the original's).
+    Up,
+    /// Row v h: v = 0 is the top (yuzc19's, which does not flip).
+    Down,
+}
+
 /// One look's conventions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Look {
@@ -93,6 +104,7 @@ pub struct Look {
     /// Whether a texel is multiplied by the material's colour (Cambrian's
     /// `colour x texture`) instead of replacing it (the original's).
     pub texture_times_color: bool,
+    pub texture_rows: TextureRows,
     /// The image axis an `angle` spans, when the renderer decides it rather
     /// than the dialect (yuzc19's is horizontal).
     pub fov_axis: Option<FovAxis>,
@@ -115,6 +127,7 @@ impl Look {
         pixels: PixelSampling::Tent,
         one_sided_planes: false,
         texture_times_color: false,
+        texture_rows: TextureRows::Up,
         fov_axis: None,
     };
 
@@ -194,6 +207,8 @@ impl Look {
         miss: Miss::Weighted,
         point_lights: PointLights::Never,
         phong_lobes: false,
+        one_sided_planes: true,
+        texture_rows: TextureRows::Down,
         ..Look::ORIGINAL
     };
 
@@ -217,6 +232,17 @@ impl Look {
             camera.fov = Some((angle, axis));
         }
         camera
+    }
+
+    /// Makes `scene` read as this look reads it where that is a property
+    /// of the scene's data: textures upside down for [`TextureRows::Down`].
+    pub fn adapt(&self, scene: &mut Scene) {
+        if self.texture_rows == TextureRows::Down {
+            scene
+                .textures
+                .iter_mut()
+                .for_each(|texture| Arc::make_mut(texture).flip_rows());
+        }
     }
 
     pub fn from_name(name: &str) -> Option<Look> {

@@ -34,6 +34,17 @@ impl Texture {
         }
     }
 
+    /// The image upside down: a renderer that reads row `v h` (v = 0 at the
+    /// top, yuzc19's) sees through [`Texture::lookup`] what it saw.
+    pub fn flip_rows(&mut self) {
+        let width = self.width;
+        for row in 0..self.height / 2 {
+            let mirror = self.height - 1 - row;
+            let (top, bottom) = self.texels.split_at_mut(mirror * width);
+            top[row * width..(row + 1) * width].swap_with_slice(&mut bottom[..width]);
+        }
+    }
+
     /// Nearest texel at (u, v) in [0, 1], v = 0 at the bottom (the original's
     /// `i = floor(u*W)`, `j = floor((1-v)*H)`, clamped).
     pub fn lookup(&self, u: f64, v: f64) -> Color {
@@ -110,6 +121,24 @@ mod tests {
             height: 2,
             texels: vec![[1., 0., 0.], [0., 1., 0.], [0., 0., 1.], [1., 1., 1.]],
         }
+    }
+
+    #[test]
+    fn flipped_rows_read_top_down() {
+        let mut texture = Texture {
+            width: 2,
+            height: 3,
+            texels: (0..6).map(|k| [k as f32, 0.0, 0.0]).collect(),
+        };
+        texture.flip_rows();
+        let column: Vec<f32> = texture.texels.iter().step_by(2).map(|t| t[0]).collect();
+        assert_eq!(column, [4.0, 2.0, 0.0]);
+        // v = 0.1 now reads the image's top row, as row = v h does.
+        assert_eq!(texture.lookup(0.9, 0.1).r, 1.0);
+        let mut square = checker();
+        square.flip_rows();
+        assert_eq!(square.lookup(0.25, 0.25).b, 0.0);
+        assert_eq!(square.lookup(0.25, 0.25).r, 1.0);
     }
 
     #[test]

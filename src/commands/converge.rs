@@ -1,7 +1,7 @@
 //! `pathtracer converge` (error against time for one scene) and
 //! `pathtracer plot` (several such curves in one SVG).
 
-use crate::commands::world_for;
+use crate::commands::prepare;
 use std::path::PathBuf;
 
 use clap::Args;
@@ -40,9 +40,9 @@ pub struct ConvergeArgs {
 }
 
 pub fn run(args: &ConvergeArgs) -> Result<(), String> {
-    let scene = load_for_render(&args.scene, &args.sampling.scene)?;
+    let mut scene = load_for_render(&args.scene, &args.sampling.scene)?;
     let settings = args.sampling.settings(&scene, args.max_spp, false);
-    let world = world_for(&scene, &settings);
+    let world = prepare(&mut scene, &settings);
     let reference = match &args.reference {
         Some(path) => read_image(path)?,
         None => {

@@ -3,7 +3,7 @@
 //! theirs and the error map of each, `index.html`, `lookalike.csv` and the
 //! summary (`pathtracer::pairs`).
 
-use crate::commands::world_for;
+use crate::commands::prepare;
 use std::collections::HashSet;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
@@ -195,7 +195,7 @@ impl PairJob<'_> {
             base: Some(self.pair.base_path(self.root)),
             ..LoadOptions::default()
         };
-        let scene = match load_scene(&self.pair.scene_path(self.root), &options) {
+        let mut scene = match load_scene(&self.pair.scene_path(self.root), &options) {
             Ok(scene) => scene,
             Err(error) => {
                 let seconds = started.elapsed().as_secs_f64();
@@ -214,7 +214,7 @@ impl PairJob<'_> {
         sampling.width = Some(width as u32);
         sampling.height = Some(height as u32);
         let settings = sampling.settings(&scene, self.spp, true);
-        let world = world_for(&scene, &settings);
+        let world = prepare(&mut scene, &settings);
         let rendered = render(&scene, &world, &settings);
         let seconds = started.elapsed().as_secs_f64();
         let ours = match rendered {

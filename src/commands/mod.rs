@@ -240,8 +240,12 @@ pub fn load_for_render(path: &Path, options: &SceneOptions) -> Result<Scene, Str
     Ok(scene)
 }
 
-/// The world of `scene` as `settings` render it (the look's planes).
-pub fn world_for(scene: &Scene, settings: &RenderSettings) -> World {
+/// `scene` adapted to the look of `settings` (see [`Look::adapt`]) and its
+/// world as the look renders it (its planes).
+///
+/// [`Look::adapt`]: crate::look::Look::adapt
+pub fn prepare(scene: &mut Scene, settings: &RenderSettings) -> World {
+    settings.look.adapt(scene);
     World::build_with(scene, settings.look.one_sided_planes)
 }
 

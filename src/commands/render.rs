@@ -1,6 +1,6 @@
 //! `pathtracer render`: a scene file to an image, with a one-line summary.
 
-use crate::commands::world_for;
+use crate::commands::prepare;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -56,11 +56,11 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     check_writable(&output, 1, 1)?;
     let encoding = args.encoding.encoding();
     encoding.check()?;
-    let scene = load_for_render(&args.scene, &args.sampling.scene)?;
+    let mut scene = load_for_render(&args.scene, &args.sampling.scene)?;
     let settings = args.sampling.settings(&scene, args.spp, !args.quiet);
     check_writable(&output, settings.width as usize, settings.height as usize)?;
     let world_start = Instant::now();
-    let world = world_for(&scene, &settings);
+    let world = prepare(&mut scene, &settings);
     let world_seconds = world_start.elapsed().as_secs_f64();
     let rule = StoppingRule {
         target_error: args.target_error,

@@ -144,7 +144,9 @@ impl<'a> SceneView<'a> {
             scene,
             world,
             direct_lights: lights::direct_lights(scene, look.point_lights),
-            light_paths: caustics::prepare(scene, world, &mut emitters),
+            // One-sided planes make visibility depend on direction, which
+            // light subpaths (traced from the light's side) cannot honour.
+            light_paths: !look.one_sided_planes && caustics::prepare(scene, world, &mut emitters),
             emitters,
             max_depth: original::MAX_DEPTH,
             camera: None,
