@@ -180,12 +180,13 @@ fn print_phases(
             "off (nothing moves)"
         }
     );
-    let view = SceneView::new(scene, world);
+    let view = SceneView::with_look(scene, world, settings.look);
     say!(
         "light subpaths  {}",
         match (settings.integrator, settings.light_paths, view.light_paths) {
             (Integrator::Original, _, _) => "off (original estimator)",
             (_, false, _) => "off (--no-light-paths)",
+            _ if settings.look.one_sided_planes => "off (the look's planes are one-sided)",
             (_, true, false) => "off (no emitters, or no mirror or glass)",
             (_, true, true) => "on (caustics by light tracing and connections)",
         }

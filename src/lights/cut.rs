@@ -33,6 +33,10 @@ const MAX_CAP_FRACTION: f64 = 0.5;
 pub struct CutPlane {
     pub normal: Vec3,
     pub offset: f64,
+    /// Hit only by rays travelling against `normal` (a look's one-sided
+    /// planes): opaque seen from the side `normal` points to, and no cut
+    /// at all from behind, where light passes through it.
+    pub one_sided: bool,
 }
 
 /// The planes that cut one sphere, at most [`MAX_CUTS`].
@@ -85,7 +89,7 @@ impl Cuts {
         let mut best: Option<Cap> = None;
         for plane in self.planes.iter().flatten() {
             let side = plane.normal.dot(reference) - plane.offset;
-            if side.abs() <= PLANE_MARGIN * radius {
+            if side.abs() <= PLANE_MARGIN * radius || (plane.one_sided && side < 0.0) {
                 continue;
             }
             let axis = if side > 0.0 {
@@ -137,6 +141,7 @@ mod tests {
         CutPlane {
             normal: Vec3::y(),
             offset: height,
+            one_sided: false,
         }
     }
 
@@ -150,6 +155,7 @@ mod tests {
             CutPlane {
                 normal: Vec3::x(),
                 offset: 0.5,
+                one_sided: false,
             },
         ];
         let cuts = Cuts::new(&center, 9.5, &planes);

@@ -10,7 +10,7 @@
 
 use std::f64::consts::PI;
 
-use super::cut::{Cap, Cuts};
+use super::cut::{Cap, CutPlane, Cuts};
 use crate::camera::concentric_disk;
 use crate::math::{Point3, Vec3, orthonormal_basis};
 use crate::trig::sin_cos_turns;
@@ -72,6 +72,73 @@ impl EmitterShape {
             } => 0.5 * (b - a).cross(&(c - a)).norm(),
             EmitterShape::Parallelogram { edge_u, edge_v, .. } => edge_u.cross(edge_v).norm(),
             EmitterShape::Ellipse { axis_u, axis_v, .. } => PI * axis_u.cross(axis_v).norm(),
+        }
+    }
+
+    /// The area that shadow rays from `reference` can reach, past `planes`
+    /// (infinite and opaque, as every plane is to a shadow ray): none when
+    /// the shape lies wholly beyond one of them, a cut sphere's cap on that
+    /// side (see [`Cuts::cap`]), else [`EmitterShape::area`].
+    pub fn reachable_area(&self, reference: &Point3, planes: &[CutPlane]) -> f64 {
+        let beyond = |plane: &CutPlane| {
+            let side = plane.normal.dot(reference) - plane.offset;
+            // From behind a one-sided plane every ray passes it.
+            let opaque = !(plane.one_sided && side < 0.0);
+            let towards = plane.normal * side.signum();
+            opaque
+                && side != 0.0
+                && self
+                    .extent_along(&towards)
+                    .is_some_and(|extent| extent < plane.offset * side.signum())
+        };
+        if planes.iter().any(beyond) {
+            return 0.0;
+        }
+        match self {
+            EmitterShape::Sphere {
+                center,
+                radius,
+                cuts,
+                ..
+            } => cuts
+                .cap(center, *radius, reference)
+                .map_or_else(|| self.area(), |cap| cap.area(*radius)),
+            _ => self.area(),
+        }
+    }
+
+    /// The largest `direction . p` over the points `p` of the shape (`None`
+    /// for a moving sphere, which sweeps a region over the shutter).
+    fn extent_along(&self, direction: &Vec3) -> Option<f64> {
+        match *self {
+            EmitterShape::Sphere {
+                center,
+                motion,
+                radius,
+                ..
+            } => (motion == Vec3::zeros()).then(|| direction.dot(&center) + radius),
+            EmitterShape::Triangle { vertices } => Some(
+                vertices
+                    .iter()
+                    .map(|v| direction.dot(v))
+                    .fold(f64::MIN, f64::max),
+            ),
+            EmitterShape::Parallelogram {
+                origin,
+                edge_u,
+                edge_v,
+            } => {
+                let (u, v) = (direction.dot(&edge_u), direction.dot(&edge_v));
+                Some(direction.dot(&origin) + u.max(0.0) + v.max(0.0))
+            }
+            EmitterShape::Ellipse {
+                center,
+                axis_u,
+                axis_v,
+            } => {
+                let (u, v) = (direction.dot(&axis_u), direction.dot(&axis_v));
+                Some(direction.dot(&center) + u.hypot(v))
+            }
         }
     }
 

@@ -1,7 +1,8 @@
 //! The emitter table of next-event estimation: every emissive primitive whose
 //! shape can be sampled, one entry per shape (per triangle for meshes, with
 //! the emission of the triangle's own material when the mesh has `.mtl`
-//! materials), chosen in proportion to its power (emission luminance x area).
+//! materials), chosen in proportion to its power (emission luminance x area; for a
+//! sphere cut by planes, the area of the cap on the camera's side).
 //!
 //! Sampled: spheres (under similarity transforms only; a non-uniformly scaled
 //! sphere is an ellipsoid and is left to BSDF sampling), triangles,
@@ -110,9 +111,15 @@ impl Emitters {
                 first_entry[index] = start as u32;
             }
         }
+        // The power that shadow rays from the camera's side of the planes
+        // can reach: smallpt's ceiling light would otherwise take the light
+        // samples of a small sphere beside it for the 600-radius sphere it
+        // is, and a light behind a wall would take its share for nothing.
+        // (Only efficiency: an emitter left out is found by the bounces.)
+        let camera = scene.camera.center;
         let weights: Vec<f64> = entries
             .iter()
-            .map(|e| e.emission.luminance().max(0.0) * e.shape.area())
+            .map(|e| e.emission.luminance().max(0.0) * e.shape.reachable_area(&camera, &planes))
             .collect();
         let distribution = Distribution::new(&weights);
         Emitters {
@@ -197,6 +204,7 @@ fn world_plane(primitive: &Primitive) -> Option<CutPlane> {
     (length > 0.0 && length.is_finite() && offset.is_finite()).then(|| CutPlane {
         normal: normal / length,
         offset: offset / length,
+        one_sided: plane.one_sided,
     })
 }
 
