@@ -20,6 +20,7 @@ pub mod geometry;
 pub mod image_io;
 pub mod integrator;
 pub mod lights;
+pub mod limits;
 pub mod look;
 pub mod math;
 pub mod metrics;
