@@ -5,6 +5,7 @@ use std::fmt::Write;
 
 use crate::film::Film;
 use crate::image_io::Image;
+use crate::limits::MemoryBudget;
 use crate::metrics::compare;
 use crate::render::{RenderSettings, render_into};
 use crate::scene::model::Scene;
@@ -22,19 +23,45 @@ pub struct ConvergencePoint {
 }
 
 /// Renders 1, 2, 4, ... up to `max_spp` samples per pixel (each stage
-/// continues the previous one) and compares every stage with `reference`.
+/// continues the previous one) and compares every stage with `reference`;
+/// `max_spp` 0 is an error (no stage, no curve).
 pub fn converge(
     scene: &Scene,
     world: &World,
     settings: &RenderSettings,
     reference: &Image,
     max_spp: u32,
+    on_point: impl FnMut(&ConvergencePoint),
+) -> Result<Vec<ConvergencePoint>, String> {
+    converge_within(
+        scene,
+        world,
+        settings,
+        reference,
+        max_spp,
+        MemoryBudget::default(),
+        on_point,
+    )
+}
+
+/// [`converge`], once the image's size is checked against `budget`.
+pub fn converge_within(
+    scene: &Scene,
+    world: &World,
+    settings: &RenderSettings,
+    reference: &Image,
+    max_spp: u32,
+    budget: MemoryBudget,
     mut on_point: impl FnMut(&ConvergencePoint),
 ) -> Result<Vec<ConvergencePoint>, String> {
-    let mut film = Film::new(
+    if max_spp == 0 {
+        return Err("the largest sample count (--max-spp) must be at least 1".to_string());
+    }
+    let mut film = Film::within(
         settings.width.max(1) as usize,
         settings.height.max(1) as usize,
-    );
+        budget,
+    )?;
     let mut points = Vec::new();
     let mut seconds = 0.0;
     let mut done = 0;

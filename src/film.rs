@@ -4,6 +4,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use crate::color::Color;
 use crate::image_io::Image;
+use crate::limits::{MemoryBudget, is_usable_radiance};
 
 /// A sample is reported as a firefly when its luminance exceeds this many
 /// times the running mean of its pixel (plus [`FIREFLY_FLOOR`]), once the
@@ -21,7 +22,8 @@ pub struct PixelSum {
     /// Sum of squared sample luminances.
     pub sum_of_squares: f64,
     pub samples: u32,
-    /// Samples dropped because they were NaN or infinite.
+    /// Samples dropped because they were NaN, infinite or beyond
+    /// [`MAX_RADIANCE`](crate::limits::MAX_RADIANCE).
     pub dropped: u32,
     /// Samples above the firefly bound (kept, unless clamped).
     pub fireflies: u32,
@@ -31,9 +33,11 @@ pub struct PixelSum {
 
 impl PixelSum {
     /// Adds one sample; `clamp` scales a sample down to that luminance
-    /// (biased, off by default).
+    /// (biased, off by default). A sample that is not finite or that a f32
+    /// output could not hold is dropped and counted: the mean of kept
+    /// samples is then within [`MAX_RADIANCE`](crate::limits::MAX_RADIANCE).
     pub fn add(&mut self, mut sample: Color, clamp: Option<f64>) {
-        if !sample.is_finite() {
+        if !is_usable_radiance([sample.r, sample.g, sample.b]) {
             self.dropped += 1;
             return;
         }
@@ -102,9 +106,13 @@ pub struct Film {
     /// number of light subpaths they come from.
     splats: Vec<[u64; 3]>,
     light_paths: u64,
+    /// Light tracing's splats dropped for a non-finite or too large value.
+    splats_dropped: u64,
 }
 
 impl Film {
+    /// A film of a size already checked against the memory budget (see
+    /// [`Film::within`]).
     pub fn new(width: usize, height: usize) -> Film {
         Film {
             width,
@@ -112,7 +120,15 @@ impl Film {
             pixels: vec![PixelSum::default(); width * height],
             splats: vec![[0; 3]; width * height],
             light_paths: 0,
+            splats_dropped: 0,
         }
+    }
+
+    /// A film, once its size is checked against `budget` (before anything
+    /// is allocated).
+    pub fn within(width: usize, height: usize, budget: MemoryBudget) -> Result<Film, String> {
+        budget.check_image(width as u64, height as u64)?;
+        Ok(Film::new(width, height))
     }
 
     /// Each pixel: the average of its samples plus light tracing's estimate
@@ -142,8 +158,10 @@ impl Film {
         self.pixels.iter().map(|p| p.samples as u64).sum()
     }
 
+    /// Camera samples and light-tracing splats dropped for a value that
+    /// is not finite or too large for a f32 output.
     pub fn dropped(&self) -> u64 {
-        self.pixels.iter().map(|p| p.dropped as u64).sum()
+        self.pixels.iter().map(|p| p.dropped as u64).sum::<u64>() + self.splats_dropped
     }
 
     pub fn fireflies(&self) -> u64 {
@@ -155,6 +173,8 @@ impl Film {
 pub struct SplatSums {
     sums: Vec<AtomicU64>,
     light_paths: AtomicU64,
+    /// Splats dropped for a non-finite or too large channel.
+    dropped: AtomicU64,
 }
 
 impl SplatSums {
@@ -163,12 +183,19 @@ impl SplatSums {
         SplatSums {
             sums: (0..3 * pixels).map(|_| AtomicU64::new(0)).collect(),
             light_paths: AtomicU64::new(0),
+            dropped: AtomicU64::new(0),
         }
     }
 
     /// Adds `value` to pixel `index` (row-major, row 0 at the top),
-    /// saturating rather than wrapping.
+    /// saturating rather than wrapping; a value that is not finite or
+    /// beyond [`MAX_RADIANCE`](crate::limits::MAX_RADIANCE) is dropped and
+    /// counted.
     pub fn add(&self, index: usize, value: Color) {
+        if !is_usable_radiance([value.r, value.g, value.b]) {
+            self.dropped.fetch_add(1, Ordering::Relaxed);
+            return;
+        }
         for (channel, v) in [value.r, value.g, value.b].into_iter().enumerate() {
             let fixed = to_fixed(v);
             if let (Some(sum), true) = (self.sums.get(3 * index + channel), fixed > 0) {
@@ -194,6 +221,7 @@ impl SplatSums {
             }
         }
         film.light_paths += self.light_paths.load(Ordering::Relaxed);
+        film.splats_dropped += self.dropped.load(Ordering::Relaxed);
     }
 }
 
@@ -206,13 +234,13 @@ mod tests {
         let mut film = Film::new(2, 1);
         let sums = SplatSums::new(2);
         sums.add(1, Color::new(0.5, 1e-9, -3.0));
-        sums.add(1, Color::new(0.25, f64::NAN, 2.0));
-        sums.add(0, Color::gray(1e300));
-        sums.add(0, Color::gray(1e300));
+        sums.add(1, Color::new(0.25, 0.0, 2.0));
+        sums.add(0, Color::gray(1e30));
+        sums.add(0, Color::gray(1e30));
         sums.add_light_paths(4);
         sums.add_to(&mut film);
         let image = film.to_image();
-        // (0.5 + 0.25) / 4 light paths; NaN and negative count as 0.
+        // (0.5 + 0.25) / 4 light paths; negative counts as 0.
         assert!((image.pixels[1].r - 0.1875).abs() < 1e-6);
         assert!(image.pixels[1].g.abs() < 1e-6 && (image.pixels[1].b - 0.5).abs() < 1e-6);
         assert!(image.pixels[0].r.is_finite() && image.pixels[0].r > 1e12);
@@ -224,10 +252,26 @@ mod tests {
         p.add(Color::gray(1.0), None);
         p.add(Color::new(f64::NAN, 0.0, 0.0), None);
         p.add(Color::new(0.0, f64::INFINITY, 0.0), None);
+        // Finite, but a f32 output would hold it as infinity.
+        p.add(Color::new(0.0, 0.0, 1e300), None);
         p.add(Color::gray(3.0), None);
         assert_eq!(p.samples, 2);
-        assert_eq!(p.dropped, 2);
+        assert_eq!(p.dropped, 3);
         assert_eq!(p.mean(), Color::gray(2.0));
+    }
+
+    #[test]
+    fn splats_too_large_for_f32_are_dropped_and_counted() {
+        let mut film = Film::new(1, 1);
+        let sums = SplatSums::new(1);
+        sums.add(0, Color::new(f64::NAN, 1.0, 1.0));
+        sums.add(0, Color::gray(f64::INFINITY));
+        sums.add(0, Color::gray(1e300));
+        sums.add(0, Color::gray(2.0));
+        sums.add_light_paths(1);
+        sums.add_to(&mut film);
+        assert_eq!(film.dropped(), 3);
+        assert!((film.to_image().pixels[0].r - 2.0).abs() < 1e-6);
     }
 
     #[test]

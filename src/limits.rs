@@ -5,6 +5,9 @@
 //! allocation or long computation starts. Film memory has a budget the user can
 //! raise with `--max-memory`; the others are fixed.
 
+use std::io::Read;
+use std::path::Path;
+
 /// Default budget for the memory an image's film and output buffers may take,
 /// in bytes (4 GiB); `--max-memory` raises or lowers it.
 pub const DEFAULT_MEMORY_BUDGET: u64 = 4 << 30;
@@ -24,8 +27,225 @@ pub const MAX_CONTROL_POINTS: usize = 4_096;
 /// Deepest nesting of groups and transforms in a scene file.
 pub const MAX_NESTING: usize = 256;
 
-/// Largest `--max-depth` (path vertices): far beyond any useful image.
+/// Largest `--max-depth` (scattering vertices of a path): far beyond any
+/// useful image, and short enough that a path always ends.
 pub const MAX_PATH_DEPTH: u32 = 10_000;
 
 /// Longest token shown whole in a message; longer ones are cut with an ellipsis.
 pub const MAX_SHOWN_TOKEN: usize = 40;
+
+/// Largest radiance a sample or a pixel may carry, per channel: half of
+/// `f32::MAX`, so that a pixel's mean (at most this) plus light tracing's
+/// saturated fixed-point sums still fits the f32 of a PFM or EXR file.
+/// Larger (and non-finite) values are dropped and counted.
+pub const MAX_RADIANCE: f64 = f32::MAX as f64 / 2.0;
+
+/// Whether every channel of a radiance value is finite and within
+/// [`MAX_RADIANCE`].
+pub fn is_usable_radiance(channels: [f64; 3]) -> bool {
+    channels
+        .iter()
+        .all(|c| c.is_finite() && c.abs() <= MAX_RADIANCE)
+}
+
+/// Bytes per pixel of an image's render: the film's sums, squares and
+/// counts ([`PixelSum`](crate::film::PixelSum)), light tracing's sums and
+/// their atomic copy during a pass (3 x 8 bytes each), the linear image the
+/// film averages to (a [`Color`](crate::color::Color)), and the largest
+/// output encoding (EXR: three copies of 3 x f32).
+pub const BYTES_PER_PIXEL: u64 = std::mem::size_of::<crate::film::PixelSum>() as u64
+    + 2 * 24
+    + std::mem::size_of::<crate::color::Color>() as u64
+    + 3 * 12;
+
+/// What an image may take in memory (`--max-memory`; default
+/// [`DEFAULT_MEMORY_BUDGET`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MemoryBudget {
+    pub bytes: u64,
+}
+
+impl Default for MemoryBudget {
+    fn default() -> MemoryBudget {
+        MemoryBudget {
+            bytes: DEFAULT_MEMORY_BUDGET,
+        }
+    }
+}
+
+impl MemoryBudget {
+    /// Memory a `width` x `height` render needs (see [`BYTES_PER_PIXEL`]).
+    pub fn image_bytes(width: u64, height: u64) -> u64 {
+        width.saturating_mul(height).saturating_mul(BYTES_PER_PIXEL)
+    }
+
+    /// Checks, before anything is allocated, that a `width` x `height`
+    /// image is within [`MAX_IMAGE_SIDE`] and the budget; the message says
+    /// what is needed, the budget, and how to raise it.
+    pub fn check_image(&self, width: u64, height: u64) -> Result<(), String> {
+        for (side, value) in [("width", width), ("height", height)] {
+            if value == 0 || value > MAX_IMAGE_SIDE as u64 {
+                return Err(format!(
+                    "image {side} {value} is outside 1 to {MAX_IMAGE_SIDE} pixels"
+                ));
+            }
+        }
+        let needed = MemoryBudget::image_bytes(width, height);
+        if needed > self.bytes {
+            let gibibytes = needed.div_ceil(1 << 30);
+            return Err(format!(
+                "a {width}x{height} image needs {} of memory ({BYTES_PER_PIXEL} bytes per pixel), \
+                 more than the budget of {}; raise it with --max-memory {gibibytes}G",
+                show_bytes(needed),
+                show_bytes(self.bytes)
+            ));
+        }
+        Ok(())
+    }
+
+    /// Checks that decoding a `width` x `height` image of `bytes_per_texel`
+    /// bytes per texel stays within the budget (decompression bombs: a small
+    /// file that claims a huge image).
+    pub fn check_texture(
+        &self,
+        width: u64,
+        height: u64,
+        bytes_per_texel: u64,
+    ) -> Result<(), String> {
+        let needed = width.saturating_mul(height).saturating_mul(bytes_per_texel);
+        if needed > self.bytes {
+            return Err(format!(
+                "its header claims {width}x{height} texels, which need {} to decode, more than \
+                 the memory budget of {}; raise it with --max-memory {}G",
+                show_bytes(needed),
+                show_bytes(self.bytes),
+                needed.div_ceil(1 << 30)
+            ));
+        }
+        Ok(())
+    }
+
+    /// Reads a size: bytes, or a number with a binary unit `K`, `M`, `G`,
+    /// `T` (optionally followed by `B` or `iB`): `8G`, `512M`, `1.5G`.
+    pub fn parse(text: &str) -> Result<MemoryBudget, String> {
+        let trimmed = text.trim();
+        let split = trimmed
+            .find(|c: char| !(c.is_ascii_digit() || c == '.'))
+            .unwrap_or(trimmed.len());
+        let (number, unit) = trimmed.split_at(split);
+        let unit = unit.trim().to_ascii_uppercase();
+        let unit = unit
+            .strip_suffix("IB")
+            .or_else(|| unit.strip_suffix('B'))
+            .unwrap_or(&unit);
+        let scale: u64 = match unit {
+            "" => 1,
+            "K" => 1 << 10,
+            "M" => 1 << 20,
+            "G" => 1 << 30,
+            "T" => 1 << 40,
+            _ => {
+                return Err(format!(
+                    "memory size '{text}' has an unknown unit (bytes, or K, M, G, T: 8G, 512M)"
+                ));
+            }
+        };
+        let value: f64 = number
+            .parse()
+            .map_err(|_| format!("memory size '{text}' is not a number of bytes (8G, 512M)"))?;
+        let bytes = value * scale as f64;
+        if !(bytes >= 1.0 && bytes < u64::MAX as f64) {
+            return Err(format!(
+                "memory size '{text}' is out of range (1 byte to 16 EiB)"
+            ));
+        }
+        Ok(MemoryBudget {
+            bytes: bytes as u64,
+        })
+    }
+}
+
+/// Reads a whole file that must be a regular file of at most `max_bytes`
+/// (`limit_name` names the limit in messages), checked by its metadata
+/// before anything is read: a directory, a device such as `/dev/zero`, a
+/// pipe or an oversized file is refused at once, never read forever.
+pub fn read_within(path: &Path, max_bytes: u64, limit_name: &str) -> Result<Vec<u8>, String> {
+    let shown = path.display();
+    let metadata = std::fs::metadata(path).map_err(|e| format!("'{shown}': {e}"))?;
+    if metadata.is_dir() {
+        return Err(format!("'{shown}' is a directory, not a file"));
+    }
+    if !metadata.is_file() {
+        return Err(format!(
+            "'{shown}' is not a regular file (a device, pipe or socket)"
+        ));
+    }
+    let too_large = |size: u64| {
+        format!(
+            "'{shown}' is {} ({size} bytes), more than the limit of {} ({limit_name})",
+            show_bytes(size),
+            show_bytes(max_bytes)
+        )
+    };
+    if metadata.len() > max_bytes {
+        return Err(too_large(metadata.len()));
+    }
+    let file = std::fs::File::open(path).map_err(|e| format!("cannot open '{shown}': {e}"))?;
+    let mut bytes = Vec::with_capacity(metadata.len() as usize);
+    // `take` also bounds a file that grows while it is read.
+    file.take(max_bytes + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("cannot read '{shown}': {e}"))?;
+    if bytes.len() as u64 > max_bytes {
+        return Err(too_large(bytes.len() as u64));
+    }
+    Ok(bytes)
+}
+
+/// A byte count for messages: `41.9 GiB`, `512.0 MiB`, `300 bytes`.
+pub fn show_bytes(bytes: u64) -> String {
+    const UNITS: [(&str, u64); 4] = [
+        ("TiB", 1 << 40),
+        ("GiB", 1 << 30),
+        ("MiB", 1 << 20),
+        ("KiB", 1 << 10),
+    ];
+    for (name, size) in UNITS {
+        if bytes >= size {
+            return format!("{:.1} {name}", bytes as f64 / size as f64);
+        }
+    }
+    format!("{bytes} bytes")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_read_with_binary_units() {
+        let bytes = |text| MemoryBudget::parse(text).map(|b| b.bytes);
+        assert_eq!(bytes("8G"), Ok(8 << 30));
+        assert_eq!(bytes("512M"), Ok(512 << 20));
+        assert_eq!(bytes("512MiB"), Ok(512 << 20));
+        assert_eq!(bytes("1.5g"), Ok(3 << 29));
+        assert_eq!(bytes("1000"), Ok(1000));
+        for bad in ["", "0", "-1G", "8X", "G", "1e30T"] {
+            assert!(bytes(bad).is_err(), "accepted {bad:?}");
+        }
+    }
+
+    #[test]
+    fn the_budget_refuses_big_images_and_says_how_to_raise_it() {
+        let budget = MemoryBudget::default();
+        assert!(budget.check_image(1920, 1080).is_ok());
+        let error = budget.check_image(16384, 16384).unwrap_err();
+        assert!(
+            error.contains("--max-memory") && error.contains("4.0 GiB"),
+            "{error}"
+        );
+        let raised = MemoryBudget { bytes: 64 << 30 };
+        assert!(raised.check_image(16384, 16384).is_ok());
+        assert!(raised.check_image(MAX_IMAGE_SIDE as u64 + 1, 1).is_err());
+    }
+}

@@ -126,6 +126,30 @@ pub fn log_log_svg(title: &str, x_label: &str, y_label: &str, series: &[Series])
     svg
 }
 
+/// Checks that every series has a point to draw (positive and finite on
+/// both axes): an empty or all-NaN curve is an error, not an empty plot.
+pub fn check_plottable(series: &[Series]) -> Result<(), String> {
+    if series.is_empty() {
+        return Err("no curves to plot".to_string());
+    }
+    for s in series {
+        let drawn = s
+            .points
+            .iter()
+            .filter(|(x, y)| usable(*x) && usable(*y))
+            .count();
+        if drawn == 0 {
+            return Err(format!(
+                "curve '{}' has no point to plot ({} rows, none with positive finite values on \
+                 both axes)",
+                s.name,
+                s.points.len()
+            ));
+        }
+    }
+    Ok(())
+}
+
 fn usable(v: f64) -> bool {
     v.is_finite() && v > 0.0
 }

@@ -12,6 +12,7 @@ use crate::camera::Camera;
 use crate::film::{Film, SplatSums};
 use crate::image_io::Image;
 use crate::integrator::{CameraSample, Integrator, SceneView, Splats};
+use crate::limits::MemoryBudget;
 use crate::look::{Look, PixelSampling};
 use crate::sampler::{Sampler, SamplerKind};
 use crate::scene::model::{Object, Scene};
@@ -61,16 +62,29 @@ impl RenderStats {
     }
 }
 
-/// Renders `scene` (whose geometry is `world`) into a linear image.
+/// Renders `scene` (whose geometry is `world`) into a linear image, within
+/// the default memory budget.
 pub fn render(
     scene: &Scene,
     world: &World,
     settings: &RenderSettings,
 ) -> Result<(Image, RenderStats), String> {
-    let mut film = Film::new(
+    render_within(scene, world, settings, MemoryBudget::default())
+}
+
+/// [`render`], once the image's size is checked against `budget` (before
+/// the film is allocated).
+pub fn render_within(
+    scene: &Scene,
+    world: &World,
+    settings: &RenderSettings,
+    budget: MemoryBudget,
+) -> Result<(Image, RenderStats), String> {
+    let mut film = Film::within(
         settings.width.max(1) as usize,
         settings.height.max(1) as usize,
-    );
+        budget,
+    )?;
     let stats = render_into(scene, world, settings, &mut film, 0..settings.spp)?;
     Ok((film.to_image(), stats))
 }

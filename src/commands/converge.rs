@@ -6,10 +6,10 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use pathtracer::converge::{Reach, converge, read_csv_series, time_to_reach, to_csv};
+use pathtracer::converge::{Reach, converge_within, read_csv_series, time_to_reach, to_csv};
 use pathtracer::image_io::{read_image, write_image};
-use pathtracer::plot::{Series, log_log_svg};
-use pathtracer::render::render;
+use pathtracer::plot::{Series, check_plottable, log_log_svg};
+use pathtracer::render::render_within;
 
 use super::{SamplingOptions, default_output, load_for_render};
 
@@ -24,10 +24,10 @@ pub struct ConvergeArgs {
     #[arg(long)]
     reference: Option<PathBuf>,
     /// Samples per pixel of the reference rendered when none is given.
-    #[arg(long, default_value_t = 4096)]
+    #[arg(long, default_value_t = 4096, value_parser = clap::value_parser!(u32).range(1..))]
     reference_spp: u32,
     /// The last stage's samples per pixel (stages: 1, 2, 4, ...).
-    #[arg(long, default_value_t = 256)]
+    #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(1..))]
     max_spp: u32,
     /// CSV of (spp, seconds, rmse, rel_mse, ssim); default output/<scene>_converge.csv.
     #[arg(long)]
@@ -42,6 +42,8 @@ pub struct ConvergeArgs {
 pub fn run(args: &ConvergeArgs) -> Result<(), String> {
     let mut scene = load_for_render(&args.scene, &args.sampling.scene)?;
     let settings = args.sampling.settings(&scene, args.max_spp, false);
+    args.sampling.check_size(&settings)?;
+    let budget = args.sampling.scene.memory_budget();
     let world = prepare(&mut scene, &settings);
     let reference = match &args.reference {
         Some(path) => read_image(path)?,
@@ -54,23 +56,31 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
                 args.reference_spp,
                 path.display()
             );
-            let (image, stats) = render(&scene, &world, &reference_settings)?;
+            let (image, stats) = render_within(&scene, &world, &reference_settings, budget)?;
             eprintln!("reference took {:.1} s", stats.seconds);
             write_image(&path, &image, None)?;
             image
         }
     };
     say!("spp  seconds  rmse  rel_mse  ssim");
-    let points = converge(&scene, &world, &settings, &reference, args.max_spp, |p| {
-        say!(
-            "{} {:.3} {:.6} {:.6e} {:.4}",
-            p.spp,
-            p.seconds,
-            p.rmse,
-            p.rel_mse,
-            p.ssim
-        )
-    })?;
+    let points = converge_within(
+        &scene,
+        &world,
+        &settings,
+        &reference,
+        args.max_spp,
+        budget,
+        |p| {
+            say!(
+                "{} {:.3} {:.6} {:.6e} {:.4}",
+                p.spp,
+                p.seconds,
+                p.rmse,
+                p.rel_mse,
+                p.ssim
+            )
+        },
+    )?;
     let csv = args
         .csv
         .clone()
@@ -144,6 +154,7 @@ pub fn plot(args: &PlotArgs) -> Result<(), String> {
         }
         series.push(Series { name, points });
     }
+    check_plottable(&series)?;
     let svg = log_log_svg(&args.title, "seconds", &args.column, &series);
     write_text(&args.output, &svg)
 }

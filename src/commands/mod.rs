@@ -19,8 +19,10 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
+use pathtracer::film::Film;
 use pathtracer::image_io::{Encoding, Tonemap};
 use pathtracer::integrator::Integrator;
+use pathtracer::limits::{MAX_IMAGE_SIDE, MAX_PATH_DEPTH, MemoryBudget};
 use pathtracer::look::{Estimator, Look, PixelSampling};
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
@@ -44,6 +46,10 @@ pub struct SceneOptions {
     /// mesh or normal/height map left out; each with a warning).
     #[arg(long, default_value = "error", value_parser = parse_missing_assets)]
     pub missing_assets: MissingAssets,
+    /// Memory an image's film and buffers, and a decoded texture, may take:
+    /// bytes or a size with a binary unit (`8G`, `512M`); default 4G.
+    #[arg(long, value_parser = parse_memory_budget)]
+    pub max_memory: Option<MemoryBudget>,
 }
 
 impl SceneOptions {
@@ -53,8 +59,18 @@ impl SceneOptions {
             dialect: self.dialect,
             strict: self.strict,
             missing_assets: self.missing_assets,
+            memory_budget: self.memory_budget(),
         }
     }
+
+    /// `--max-memory`, or the default budget.
+    pub fn memory_budget(&self) -> MemoryBudget {
+        self.max_memory.unwrap_or_default()
+    }
+}
+
+fn parse_memory_budget(text: &str) -> Result<MemoryBudget, String> {
+    MemoryBudget::parse(text)
 }
 
 /// How 8-bit outputs (BMP, PNG) encode radiance, shared by `render` and
@@ -102,10 +118,10 @@ pub struct SamplingOptions {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     pub threads: Option<u32>,
     /// Image width, overriding the scene's camera.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=32768))]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
     pub width: Option<u32>,
     /// Image height, overriding the scene's camera.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=32768))]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
     pub height: Option<u32>,
     /// Sample values: `sobol` (Owen-scrambled Sobol', the default) or
     /// `independent` (one random generator per pixel sample).
@@ -118,8 +134,8 @@ pub struct SamplingOptions {
     #[arg(long, value_parser = parse_integrator)]
     pub integrator: Option<Integrator>,
     /// Scattering vertices before a path ends (default: the look's; the
-    /// original: 5).
-    #[arg(long)]
+    /// original: 5; at most 10000).
+    #[arg(long, value_parser = parse_max_depth)]
     pub max_depth: Option<u32>,
     /// BIASED: scale every sample down to at most this luminance, trading
     /// energy for the absence of fireflies. Off by default.
@@ -189,6 +205,44 @@ impl SamplingOptions {
             light_paths: !self.no_light_paths,
             look,
         }
+    }
+}
+
+fn parse_max_depth(text: &str) -> Result<u32, String> {
+    match text.trim().parse::<u64>() {
+        Ok(depth) if depth <= MAX_PATH_DEPTH as u64 => Ok(depth as u32),
+        Ok(depth) => Err(format!(
+            "{depth} scattering vertices is more than the limit of {MAX_PATH_DEPTH} \
+             (limits::MAX_PATH_DEPTH)"
+        )),
+        Err(_) => Err(format!(
+            "'{text}' is not a whole number of scattering vertices"
+        )),
+    }
+}
+
+impl SamplingOptions {
+    /// Checks the image size of `settings` against the memory budget
+    /// before anything is allocated, naming `--width`/`--height` when they
+    /// chose it (a scene's own size is checked, at its place, when the
+    /// scene is built).
+    pub fn check_size(&self, settings: &RenderSettings) -> Result<(), String> {
+        let budget = self.scene.memory_budget();
+        budget
+            .check_image(settings.width as u64, settings.height as u64)
+            .map_err(|error| match (self.width, self.height) {
+                (None, None) => error,
+                (Some(w), None) => format!("--width {w}: {error}"),
+                (None, Some(h)) => format!("--height {h}: {error}"),
+                (Some(w), Some(h)) => format!("--width {w} --height {h}: {error}"),
+            })
+    }
+
+    /// The film of `settings`, once its size is checked (see
+    /// [`SamplingOptions::check_size`]).
+    pub fn film(&self, settings: &RenderSettings) -> Result<Film, String> {
+        self.check_size(settings)?;
+        Ok(Film::new(settings.width as usize, settings.height as usize))
     }
 }
 

@@ -7,7 +7,6 @@ use std::time::Instant;
 use clap::Args;
 
 use pathtracer::adaptive::{StoppingRule, render_adaptive};
-use pathtracer::film::Film;
 use pathtracer::image_io::{check_writable, is_hdr, write_atomically, write_encoded};
 use pathtracer::integrator::{Integrator, SceneView};
 use pathtracer::render::{RenderSettings, SamplingPlan, render_into};
@@ -66,7 +65,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         target_error: args.target_error,
         time_budget: args.time_budget,
     };
-    let mut film = Film::new(settings.width as usize, settings.height as usize);
+    let mut film = args.sampling.film(&settings)?;
     let stats = if rule == StoppingRule::default() {
         render_into(&scene, &world, &settings, &mut film, 0..settings.spp)?
     } else {

@@ -27,6 +27,8 @@ pub struct LoadOptions {
     pub strict: bool,
     /// What a texture or mesh file that is not found becomes (`--missing-assets`).
     pub missing_assets: MissingAssets,
+    /// Memory the camera's image and a decoded texture may take (`--max-memory`).
+    pub memory_budget: crate::limits::MemoryBudget,
 }
 
 /// What a scene's missing texture or mesh file becomes.

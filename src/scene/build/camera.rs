@@ -118,6 +118,9 @@ pub fn build_camera(
             if u64::from(w) * u64::from(h) > MAX_PIXELS {
                 return Err(context.error(at, format!("image size {w}x{h} is too large")));
             }
+            (context.options.memory_budget)
+                .check_image(u64::from(w), u64::from(h))
+                .map_err(|e| context.error(at, e))?;
             (w, h)
         }
         (w, h) => {
