@@ -1,39 +1,34 @@
-//! Reading files with a size cap, and decoding LDR formats through the `image` crate.
+//! Reading files with a size cap, checking an image's header before it is
+//! decoded, and decoding LDR formats through the `image` crate.
 
-use std::fs::File;
-use std::io::{Cursor, Read};
+use std::io::{Cursor, ErrorKind};
 use std::path::Path;
 
-use image::{DynamicImage, ImageReader, Limits};
+use image::{DynamicImage, ImageError, ImageReader, Limits};
 
-use super::{Image, MAX_DIMENSION, MAX_PIXELS, PixelValues};
+use super::{Image, MAX_DIMENSION, MAX_PIXELS, PixelValues, bmp_format};
 use crate::color::Color;
+use crate::limits::{MemoryBudget, read_within};
 
 /// The largest file read: an uncompressed float RGB image at the pixel cap, plus a header.
 const MAX_FILE_BYTES: u64 = (MAX_PIXELS as u64) * 12 + 4096;
 
-/// Reads the whole file, refusing files larger than [`MAX_FILE_BYTES`].
+/// Reads the whole file, refusing directories, devices and files larger
+/// than [`MAX_FILE_BYTES`] before reading.
 pub(super) fn read_capped(path: &Path) -> Result<Vec<u8>, String> {
-    let shown = path.display();
-    let file = File::open(path).map_err(|e| format!("{shown}: cannot open: {e}"))?;
-    let mut bytes = Vec::new();
-    // Reading through `take` also guards against files that grow while read.
-    file.take(MAX_FILE_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| format!("{shown}: cannot read: {e}"))?;
-    if bytes.len() as u64 > MAX_FILE_BYTES {
-        return Err(format!(
-            "{shown}: file larger than the limit of {MAX_FILE_BYTES} bytes"
-        ));
-    }
-    Ok(bytes)
+    read_within(path, MAX_FILE_BYTES, "the largest float image")
 }
 
-/// Decodes BMP, PNG, JPEG, TGA or EXR bytes; 8-bit values become `v / 255`,
-/// no gamma; float values are kept. Integer samples (8 or 16 bits) are
-/// display values, float samples (EXR) linear radiance.
-pub(super) fn decode_ldr(bytes: &[u8]) -> Result<(Image, PixelValues), String> {
-    let mut reader = ImageReader::new(Cursor::new(bytes))
+/// Checks an encoded image before it is decoded: a known format, a header
+/// that reads, dimensions whose decoding (`bytes_per_pixel` each) fits
+/// `budget` (a small file may claim a huge image), and for BMP the length
+/// its header promises. Returns the width and height.
+pub fn check_decodable(
+    bytes: &[u8],
+    budget: MemoryBudget,
+    bytes_per_pixel: u64,
+) -> Result<(u32, u32), String> {
+    let reader = ImageReader::new(Cursor::new(bytes))
         .with_guessed_format()
         .map_err(|e| format!("cannot read: {e}"))?;
     if reader.format().is_none() {
@@ -41,11 +36,42 @@ pub(super) fn decode_ldr(bytes: &[u8]) -> Result<(Image, PixelValues), String> {
             "unrecognised image format (readable: BMP, PNG, JPEG, TGA, PFM, EXR)".to_string(),
         );
     }
+    let (width, height) = reader.into_dimensions().map_err(describe_error)?;
+    budget.check_texture(width as u64, height as u64, bytes_per_pixel)?;
+    bmp_format::check_complete(bytes)?;
+    Ok((width, height))
+}
+
+/// A decoder's error for messages: a file that ends early is called
+/// truncated (the decoder says "failed to fill whole buffer").
+pub fn describe_error(error: ImageError) -> String {
+    match &error {
+        ImageError::IoError(io) if io.kind() == ErrorKind::UnexpectedEof => {
+            "truncated: the file ends before its image data does".to_string()
+        }
+        _ => format!("cannot decode: {error}"),
+    }
+}
+
+/// Decodes BMP, PNG, JPEG, TGA or EXR bytes; 8-bit values become `v / 255`,
+/// no gamma; float values are kept. Integer samples (8 or 16 bits) are
+/// display values, float samples (EXR) linear radiance.
+pub(super) fn decode_ldr(bytes: &[u8]) -> Result<(Image, PixelValues), String> {
+    // Decoding takes up to 16 bytes per pixel (RGBA f32), `Color` 24 more.
+    let (claimed_width, claimed_height) = check_decodable(bytes, MemoryBudget::default(), 40)?;
+    if claimed_width as usize * claimed_height as usize > MAX_PIXELS {
+        return Err(format!(
+            "{claimed_width}x{claimed_height} image exceeds the limit of {MAX_PIXELS} pixels"
+        ));
+    }
+    let mut reader = ImageReader::new(Cursor::new(bytes))
+        .with_guessed_format()
+        .map_err(|e| format!("cannot read: {e}"))?;
     let mut limits = Limits::default();
     limits.max_image_width = Some(MAX_DIMENSION as u32);
     limits.max_image_height = Some(MAX_DIMENSION as u32);
     reader.limits(limits);
-    let decoded = reader.decode().map_err(|e| format!("cannot decode: {e}"))?;
+    let decoded = reader.decode().map_err(describe_error)?;
     let (width, height) = (decoded.width() as usize, decoded.height() as usize);
     if width * height > MAX_PIXELS {
         return Err(format!(

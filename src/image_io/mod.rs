@@ -20,6 +20,8 @@ pub use tonemap::{Encoding, Tonemap};
 
 /// Writes any bytes to a file whole or not at all (temporary file + rename).
 pub use atomic::write_file as write_atomically;
+pub use bmp_format::check_complete as check_bmp_complete;
+pub use decode::{check_decodable, describe_error};
 pub use display::DisplayImage;
 
 use std::path::Path;
@@ -45,7 +47,7 @@ pub enum PixelValues {
 }
 
 /// The largest width or height accepted when reading or writing.
-pub(crate) const MAX_DIMENSION: usize = 1 << 15;
+pub(crate) const MAX_DIMENSION: usize = crate::limits::MAX_IMAGE_SIDE as usize;
 
 /// The largest pixel count accepted when reading (64 Mpixel, 1.5 GiB of `Color`).
 pub(crate) const MAX_PIXELS: usize = 1 << 26;

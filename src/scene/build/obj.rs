@@ -2,11 +2,12 @@
 //! into one, with the `.mtl` materials of their faces (converted by `mtl`).
 
 use std::cell::RefCell;
-use std::io::BufReader;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 
+use crate::limits::{MAX_MESH_BYTES, read_within};
 use crate::math::{Point3, Vec3};
+use crate::scene::build::obj_check;
 use crate::scene::model::{MeshData, OWN_MATERIAL};
 
 /// A `.mtl` file as read: where it is and its text (to find the lines of
@@ -45,8 +46,9 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
         ignore_points: true,
         ignore_lines: true,
     };
-    let file = std::fs::File::open(path)
-        .map_err(|e| format!("cannot read mesh '{}': {e}", path.display()))?;
+    let text = read_obj_text(path)?;
+    obj_check::check_obj_text(&text)
+        .map_err(|problem| format!("{}:{}: {}", path.display(), problem.line, problem.message))?;
     let folder = path.parent().unwrap_or(Path::new("")).to_path_buf();
     // tobj calls this once per `mtllib`, in order, and appends the materials
     // it returns: record each library with its text and material count.
@@ -54,13 +56,12 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     let warnings = RefCell::new(Vec::new());
     let load_library = |name: &Path| {
         let full = folder.join(name);
-        let text = match std::fs::read_to_string(&full) {
-            Ok(text) => text,
+        let text = match read_within(&full, MAX_MESH_BYTES, "limits::MAX_MESH_BYTES") {
+            Ok(bytes) => String::from_utf8_lossy(&bytes).into_owned(),
             Err(e) => {
                 warnings.borrow_mut().push(format!(
-                    "mesh '{}': materials not loaded ('{}': {e})",
-                    path.display(),
-                    full.display()
+                    "mesh '{}': materials not loaded ({e})",
+                    path.display()
                 ));
                 return Err(tobj::LoadError::OpenFileFailed);
             }
@@ -78,7 +79,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
         }
         result
     };
-    let mut reader = BufReader::new(file);
+    let mut reader = text.as_bytes();
     let loaded = catch_unwind(AssertUnwindSafe(|| {
         tobj::load_obj_buf(&mut reader, &options, load_library)
     }))
@@ -167,6 +168,23 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
         materials,
         warnings,
     })
+}
+
+/// The text of an OBJ file: a regular file within [`MAX_MESH_BYTES`]
+/// (checked before it is read), with no NUL byte (a binary file, or a
+/// sparse file of zeros, is not an OBJ). Other bytes that are not UTF-8
+/// (comments in a legacy encoding) are decoded lossily.
+fn read_obj_text(path: &Path) -> Result<String, String> {
+    let bytes = read_within(path, MAX_MESH_BYTES, "limits::MAX_MESH_BYTES")
+        .map_err(|e| format!("cannot read mesh: {e}"))?;
+    if let Some(offset) = bytes.iter().position(|&b| b == 0) {
+        let line = 1 + bytes[..offset].iter().filter(|&&b| b == b'\n').count();
+        return Err(format!(
+            "{}:{line}: not a text OBJ file (a NUL byte at offset {offset})",
+            path.display()
+        ));
+    }
+    Ok(String::from_utf8_lossy(&bytes).into_owned())
 }
 
 #[cfg(test)]

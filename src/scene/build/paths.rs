@@ -30,14 +30,17 @@ pub fn candidates(relative: &str, scene_file: &Path, options: &LoadOptions) -> V
     out
 }
 
-/// The first candidate that exists, or the list of tried paths.
+/// The first candidate that is a file, else the first that exists (a
+/// directory or a device, which its reader refuses by name), or the list
+/// of tried paths.
 pub fn resolve(
     relative: &str,
     scene_file: &Path,
     options: &LoadOptions,
 ) -> Result<PathBuf, Vec<PathBuf>> {
     let tried = candidates(relative, scene_file, options);
-    match tried.iter().find(|p| p.is_file()) {
+    let file = tried.iter().find(|p| p.is_file());
+    match file.or_else(|| tried.iter().find(|p| p.exists())) {
         Some(found) => Ok(found.clone()),
         None => Err(tried),
     }

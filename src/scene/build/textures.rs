@@ -24,6 +24,7 @@ use crate::checker::Checker;
 use crate::scene::MissingAssets;
 use crate::scene::build::descriptor::{self, Descriptor};
 use crate::scene::build::material::{MaterialSpec, PathRef};
+use crate::scene::build::texture_file::read_texture;
 use crate::scene::build::{Context, paths};
 use crate::scene::error::SceneError;
 use crate::scene::model::{Bump, Material, Object};
@@ -245,7 +246,7 @@ impl Loader {
         if let Some(&index) = self.cache.get(&file) {
             return Ok(Some(index));
         }
-        let texture = read_image(&file).map_err(|e| {
+        let texture = read_texture(&file, context.options.memory_budget).map_err(|e| {
             context.error(
                 path.location,
                 format!("cannot read texture '{}': {e}", file.display()),
@@ -305,22 +306,6 @@ fn looks_like_normal_map(texture: &Texture) -> bool {
     }
     let [r, g, b] = sum.map(|s| s / texture.texels.len() as f64);
     b >= 0.6 && (r - 0.5).abs() <= 0.1 && (g - 0.5).abs() <= 0.1
-}
-
-/// Decodes an image into linear [0, 1] texels (no gamma conversion).
-pub fn read_image(file: &std::path::Path) -> Result<Texture, String> {
-    let reader = image::ImageReader::open(file)
-        .map_err(|e| e.to_string())?
-        .with_guessed_format()
-        .map_err(|e| e.to_string())?;
-    let image = reader.decode().map_err(|e| e.to_string())?.to_rgb32f();
-    let (width, height) = image.dimensions();
-    let texels = image.pixels().map(|p| [p.0[0], p.0[1], p.0[2]]).collect();
-    Ok(Texture {
-        width: width as usize,
-        height: height as usize,
-        texels,
-    })
 }
 
 #[cfg(test)]
