@@ -55,16 +55,74 @@ impl Curve {
 }
 
 /// De Casteljau: the last two points of the triangle give the point and the
-/// derivative `n (b1 - b0)`.
+/// derivative `n (b1 - b0)`. Its work is quadratic in the number of controls,
+/// so long control polygons are summed in the Bernstein basis instead.
 fn bezier(controls: &[Point2], u: f64) -> (Point2, Point2) {
     let n = controls.len();
     if n > STACK_CONTROLS {
-        let mut work = controls.to_vec();
-        return de_casteljau(&mut work, u);
+        return long_bezier(controls, u);
     }
     let mut work = [Point2::zeros(); STACK_CONTROLS];
     work[..n].copy_from_slice(controls);
     de_casteljau(&mut work[..n], u)
+}
+
+/// A Bezier curve of many controls: the point is `sum B(n, i)(u) P_i` and the
+/// derivative `n sum B(n - 1, i)(u) (P_(i+1) - P_i)`, each summed by
+/// `bernstein_sum`. Outside [0, 1] the curve goes on along its end tangent
+/// (a polynomial of high degree is useless there: it grows like `2^n`).
+fn long_bezier(controls: &[Point2], u: f64) -> (Point2, Point2) {
+    let end = u.clamp(0.0, 1.0);
+    let degree = controls.len() - 1;
+    let point = bernstein_sum(degree, end, |i| controls[i]);
+    let tangent = bernstein_sum(degree - 1, end, |i| controls[i + 1] - controls[i]) * degree as f64;
+    (point + tangent * (u - end), tangent)
+}
+
+/// Weights below this fraction of the largest one are left out of a sum.
+const NEGLIGIBLE_WEIGHT: f64 = 1e-20;
+
+/// `sum B(degree, i)(u) value(i)` for `u` in [0, 1]. The Bernstein weights
+/// peak near `i = degree u` and fall off faster than a Gaussian of width
+/// `sqrt(degree u (1 - u))` on either side; they are computed relative to
+/// the peak by the ratio of neighbours, summed out from it until negligible,
+/// and normalised by their sum (the weights sum to one). The work is about
+/// the width of the peak (at most `degree + 1` terms), with no factorials
+/// to overflow and no powers to underflow.
+fn bernstein_sum(degree: usize, u: f64, value: impl Fn(usize) -> Point2) -> Point2 {
+    let v = 1.0 - u;
+    let peak = ((degree as f64 * u).round() as usize).min(degree);
+    let mut total = value(peak);
+    let mut weights = 1.0;
+    // Upwards: w(i + 1) / w(i) = (degree - i) u / ((i + 1) v).
+    let mut weight = 1.0;
+    for i in peak..degree {
+        let denominator = (i + 1) as f64 * v;
+        if denominator <= 0.0 {
+            break;
+        }
+        weight *= (degree - i) as f64 * u / denominator;
+        if weight.is_nan() || weight <= NEGLIGIBLE_WEIGHT {
+            break;
+        }
+        total += value(i + 1) * weight;
+        weights += weight;
+    }
+    // Downwards: w(i - 1) / w(i) = i v / ((degree - i + 1) u).
+    let mut weight = 1.0;
+    for i in (1..=peak).rev() {
+        let denominator = (degree - i + 1) as f64 * u;
+        if denominator <= 0.0 {
+            break;
+        }
+        weight *= i as f64 * v / denominator;
+        if weight.is_nan() || weight <= NEGLIGIBLE_WEIGHT {
+            break;
+        }
+        total += value(i - 1) * weight;
+        weights += weight;
+    }
+    total / weights
 }
 
 fn de_casteljau(work: &mut [Point2], u: f64) -> (Point2, Point2) {
@@ -180,6 +238,46 @@ mod tests {
         // End derivative is degree * (last - previous).
         let (_, d) = curve.evaluate(1.0);
         assert!((d - Point2::new(0.4, 0.6) * 6.0).norm() < 1e-12);
+    }
+
+    /// A polygon of `n` controls on a wavy line, for long curves.
+    fn wavy(n: usize) -> Vec<[f64; 2]> {
+        (0..n)
+            .map(|i| [1.0 + 0.5 * (i as f64 * 0.37).sin(), i as f64 / n as f64])
+            .collect()
+    }
+
+    #[test]
+    fn long_bezier_sums_agree_with_de_casteljau() {
+        for n in [STACK_CONTROLS + 1, 200, 1000] {
+            let controls: Vec<Point2> = wavy(n).iter().map(|c| Point2::new(c[0], c[1])).collect();
+            for k in 0..=50 {
+                let u = k as f64 / 50.0;
+                let (point, tangent) = long_bezier(&controls, u);
+                let (expected, expected_tangent) = de_casteljau(&mut controls.clone(), u);
+                assert!((point - expected).norm() < 1e-12, "n={n} u={u}");
+                let error = (tangent - expected_tangent).norm();
+                assert!(
+                    error < 1e-9 * (1.0 + expected_tangent.norm()),
+                    "n={n} u={u}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn long_bezier_derivative_matches_finite_differences_and_extends_linearly() {
+        let arc: Vec<[f64; 2]> = (0..4096)
+            .map(|i| {
+                let angle = i as f64 / 4095.0 * std::f64::consts::PI;
+                [1.0 + 0.5 * angle.sin(), angle.cos()]
+            })
+            .collect();
+        let curve = profile(CurveKind::Bezier, &arc);
+        assert_derivative_matches(&curve);
+        let (start, tangent) = curve.evaluate(0.0);
+        let (before, _) = curve.evaluate(-0.1);
+        assert!((before - (start - tangent * 0.1)).norm() < 1e-12);
     }
 
     #[test]

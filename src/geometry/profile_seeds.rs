@@ -68,7 +68,7 @@ impl SeedTessellation {
         let (y_a, y_b) = (ray.o.y + t0 * ray.d.y, ray.o.y + t1 * ray.d.y);
         let (y_lo, y_hi) = (y_a.min(y_b), y_a.max(y_b));
         let t_closest = if ray.a > 0.0 {
-            (-ray.b / ray.a).clamp(t0, t1)
+            within(-ray.b / ray.a, t0, t1)
         } else {
             t0
         };
@@ -122,15 +122,27 @@ fn segment_seeds(
     let (x0, y0) = (segment.start.x, segment.start.y);
     let (dx, dy) = (segment.end.x - x0, segment.end.y - y0);
     let mut candidates = [f64::NAN; 3];
-    if dy.abs() >= dx.abs() {
+    if dx == 0.0 && dy == 0.0 {
+        // A piece of the profile that stays at one point (equal controls): its
+        // chord is that point, reached where the ray passes its height or
+        // comes closest to the axis.
+        if ray.d.y != 0.0 {
+            candidates[0] = (y0 - ray.o.y) / ray.d.y;
+        }
+        if ray.a > 0.0 {
+            candidates[1] = -ray.b / ray.a;
+        }
+    } else if dy.abs() >= dx.abs() || (ray.d.y == 0.0 && dy != 0.0) {
         // s = alpha + beta t and x = p + q t: solve r(t)^2 = x(t)^2 for t.
+        // (A horizontal ray meets a flat segment at one height too: the
+        // other branch would divide by its zero `d.y`.)
         let (alpha, beta) = ((ray.o.y - y0) / dy, ray.d.y / dy);
         let (p, q) = (x0 + dx * alpha, dx * beta);
         candidates = quadratic_candidates(ray.a - q * q, ray.b - p * q, ray.c - p * p);
         // Keep the extremum within the segment's t range.
         if beta != 0.0 {
             let (ta, tb) = (-alpha / beta, (1.0 - alpha) / beta);
-            candidates[0] = candidates[0].clamp(ta.min(tb), ta.max(tb));
+            candidates[0] = within(candidates[0], ta.min(tb), ta.max(tb));
         }
     } else if ray.d.y != 0.0 {
         // t = alpha + beta s: solve r(t(s))^2 = x(s)^2 for s.
@@ -142,7 +154,7 @@ fn segment_seeds(
             a * alpha * alpha + 2.0 * b * alpha + c - x0 * x0,
         );
         candidates = roots.map(|s| alpha + beta * s);
-        candidates[0] = alpha + beta * roots[0].clamp(0.0, 1.0);
+        candidates[0] = alpha + beta * within(roots[0], 0.0, 1.0);
     }
     for t in candidates {
         if !(t.is_finite() && t >= t0 && t <= t1) {
@@ -154,6 +166,13 @@ fn segment_seeds(
             push(t, segment.u0 + s * (segment.u1 - segment.u0));
         }
     }
+}
+
+/// `x` limited to `[lo, hi]`; unlike `f64::clamp` it never panics: NaN bounds
+/// are ignored and `lo > hi` gives `hi` (a NaN `x` stays NaN, and callers
+/// drop non-finite candidates).
+fn within(x: f64, lo: f64, hi: f64) -> f64 {
+    if x.is_nan() { x } else { x.max(lo).min(hi) }
 }
 
 /// The extremum and the real roots of `qa x^2 + 2 qb x + qc` (NaN when absent).

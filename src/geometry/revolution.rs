@@ -37,8 +37,10 @@ pub struct Revolution {
 }
 
 impl Revolution {
-    /// `None` for an unusable profile (fewer than two finite control points, or
-    /// a zero-size control polygon).
+    /// `None` for an unusable profile: fewer than two finite control points, a
+    /// control polygon of zero size, or one on the axis (a surface without
+    /// area). Repeated controls are fine: the seeds and Newton steps of a
+    /// piece that stays at one point are guarded against dividing by zero.
     pub fn new(profile: &Profile) -> Option<Revolution> {
         let curve = Curve::new(profile)?;
         // Bezier curves and B-splines lie in the convex hull of their controls.
@@ -46,8 +48,12 @@ impl Revolution {
         let radius = controls.iter().fold(0.0f64, |r, c| r.max(c.x.abs()));
         let y_min = controls.iter().fold(f64::INFINITY, |m, c| m.min(c.y));
         let y_max = controls.iter().fold(f64::NEG_INFINITY, |m, c| m.max(c.y));
+        let first = controls[0];
+        if controls.iter().all(|c| *c == first) {
+            return None;
+        }
         let scale = radius.max(y_max - y_min);
-        if !(scale > 0.0 && scale.is_finite()) {
+        if !(radius > 0.0 && scale.is_finite()) {
             return None;
         }
         let bounds = Aabb {
@@ -139,9 +145,11 @@ impl Revolution {
             if determinant == 0.0 || !determinant.is_finite() {
                 break;
             }
-            let dt = (g1 * j22 - j12 * g2) / determinant;
+            let mut dt = (g1 * j22 - j12 * g2) / determinant;
             let mut du = (j11 * g2 - j21 * g1) / determinant;
-            let mut dt = dt;
+            if !(dt.is_finite() && du.is_finite()) {
+                break;
+            }
             // Damp wild steps so the iteration stays near its seed.
             if du.abs() > 0.125 {
                 let damping = 0.125 / du.abs();

@@ -1,6 +1,6 @@
 //! The syntax tree of a scene file: words, numbers, blocks and bracket lists, with spans.
 
-use crate::scene::error::Location;
+use crate::scene::error::{Location, shown};
 
 /// One item of a document or of a block body.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,12 +57,20 @@ impl Item {
         }
     }
 
+    /// A word Rust reads as a number that is not finite (`nan`, `inf`,
+    /// `-Infinity`): where a number is expected, the message says "finite".
+    pub fn is_non_finite_word(&self) -> bool {
+        self.word()
+            .and_then(|w| w.parse::<f64>().ok())
+            .is_some_and(|n| !n.is_finite())
+    }
+
     /// A short description for messages.
     pub fn describe(&self) -> String {
         match &self.kind {
-            ItemKind::Word(w) => format!("'{w}'"),
+            ItemKind::Word(w) => format!("'{}'", shown(w)),
             ItemKind::Number(n) => format!("number {n}"),
-            ItemKind::Block(b) => format!("block '{}'", b.name),
+            ItemKind::Block(b) => format!("block '{}'", shown(&b.name)),
             ItemKind::List(_) => "a [ ] list".to_string(),
         }
     }

@@ -1,7 +1,20 @@
 //! User-facing errors and warnings with a file, line and column.
 
+use std::borrow::Cow;
 use std::fmt;
 use std::path::PathBuf;
+
+use crate::limits::MAX_SHOWN_TOKEN;
+
+/// A token of the scene text as a message shows it: whole up to
+/// `MAX_SHOWN_TOKEN` characters, else its first ones and an ellipsis (cut on
+/// a character boundary), so a multi-megabyte token never fills a terminal.
+pub fn shown(token: &str) -> Cow<'_, str> {
+    match token.char_indices().nth(MAX_SHOWN_TOKEN) {
+        Some((end, _)) => Cow::Owned(format!("{}…", &token[..end])),
+        None => Cow::Borrowed(token),
+    }
+}
 
 /// A position in a scene file (1-based line and column).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -53,3 +66,19 @@ impl fmt::Display for SceneError {
 }
 
 impl std::error::Error for SceneError {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn long_tokens_are_cut_on_a_character_boundary() {
+        assert_eq!(shown("radius"), "radius");
+        let exact = "é".repeat(MAX_SHOWN_TOKEN);
+        assert_eq!(shown(&exact), exact.as_str());
+        let long = "é".repeat(MAX_SHOWN_TOKEN + 1);
+        let cut = shown(&long);
+        assert_eq!(cut.chars().count(), MAX_SHOWN_TOKEN + 1);
+        assert!(cut.ends_with('…'));
+    }
+}

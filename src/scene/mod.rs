@@ -96,7 +96,7 @@ mod tests {
 
     #[test]
     fn deeply_nested_groups_build() {
-        let depth = parse::MAX_DEPTH - 2;
+        let depth = crate::limits::MAX_NESTING - 2;
         let text = format!(
             "PerspectiveCamera {{ width 2 height 2 }}\nGroup {{ {} Sphere {{ center 0 0 0 radius 1 }} {} }}",
             "Transform { Translate 1 0 0 Group { ".repeat(depth / 2),

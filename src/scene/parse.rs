@@ -10,11 +10,9 @@ use nom::combinator::{map, value};
 use nom::multi::many0_count;
 use nom::sequence::pair;
 
+use crate::limits::MAX_NESTING;
 use crate::scene::ast::{Block, Document, Item, ItemKind};
-use crate::scene::error::{Diagnostic, Location, SceneError};
-
-/// Deepest allowed `{` nesting; deeper input is an error, not a stack overflow.
-pub const MAX_DEPTH: usize = 128;
+use crate::scene::error::{Diagnostic, Location, SceneError, shown};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Token<'a> {
@@ -48,28 +46,43 @@ fn token(input: &str) -> IResult<&str, Token<'_>> {
 }
 
 /// Maps byte offsets to 1-based line and column (columns count characters).
+///
+/// Lines are found by binary search in the line starts; columns are counted
+/// on from the previous offset located on the same line, so locating every
+/// token of a file in order takes time linear in its length, however long
+/// its lines are.
 struct LineIndex<'a> {
     text: &'a str,
     starts: Vec<usize>,
+    /// The last offset located, its line and its column.
+    previous: (usize, usize, usize),
 }
 
 impl<'a> LineIndex<'a> {
     fn new(text: &'a str) -> Self {
         let mut starts = vec![0];
         starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
-        LineIndex { text, starts }
+        LineIndex {
+            text,
+            starts,
+            previous: (0, 1, 1),
+        }
     }
 
-    fn locate(&self, offset: usize) -> Location {
+    fn locate(&mut self, offset: usize) -> Location {
         let line = self.starts.partition_point(|&s| s <= offset).max(1);
         let start = self.starts.get(line - 1).copied().unwrap_or(0);
-        let column = self
-            .text
-            .get(start..offset)
-            .map_or(0, |s| s.chars().count());
+        let (previous_offset, previous_line, previous_column) = self.previous;
+        let (from, column) = if previous_line == line && previous_offset <= offset {
+            (previous_offset, previous_column)
+        } else {
+            (start, 1)
+        };
+        let column = column + self.text.get(from..offset).map_or(0, |s| s.chars().count());
+        self.previous = (offset, line, column);
         Location {
             line: line as u32,
-            column: column as u32 + 1,
+            column: column as u32,
         }
     }
 }
@@ -98,8 +111,10 @@ fn error(file: &Path, location: Location, message: String) -> SceneError {
 }
 
 /// Parses scene text into a syntax tree. `file` is only used in messages.
+/// A leading byte order mark is skipped (columns are counted after it).
 pub fn parse(text: &str, file: &Path) -> Result<Document, SceneError> {
-    let lines = LineIndex::new(text);
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut lines = LineIndex::new(text);
     let mut stack = vec![Frame {
         name: String::new(),
         location: Location::default(),
@@ -135,7 +150,7 @@ pub fn parse(text: &str, file: &Path) -> Result<Document, SceneError> {
                         return Err(error(
                             file,
                             location,
-                            format!("expected a number or ']' in a list, found '{t}'"),
+                            format!("expected a number or ']' in a list, found '{}'", shown(t)),
                         ));
                     }
                 },
@@ -151,11 +166,11 @@ pub fn parse(text: &str, file: &Path) -> Result<Document, SceneError> {
         }
         match tok {
             Token::Punct('{') => {
-                if stack.len() > MAX_DEPTH {
+                if stack.len() > MAX_NESTING {
                     return Err(error(
                         file,
                         location,
-                        format!("blocks nested deeper than {MAX_DEPTH} levels"),
+                        format!("blocks nested deeper than {MAX_NESTING} levels"),
                     ));
                 }
                 let top = stack.last_mut();
@@ -220,7 +235,7 @@ pub fn parse(text: &str, file: &Path) -> Result<Document, SceneError> {
         let what = if frame.name.is_empty() {
             "'{'".to_string()
         } else {
-            format!("block '{}'", frame.name)
+            format!("block '{}'", shown(&frame.name))
         };
         return Err(error(
             file,

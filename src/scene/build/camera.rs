@@ -41,8 +41,15 @@ pub fn build_camera(
             "up" => up = cursor.vec3(context, key)?,
             "lookFrom" => look_from = Some(cursor.vec3(context, key)?),
             "lookAt" => look_at = Some(cursor.vec3(context, key)?),
-            "width" => width = Some((cursor.number(context, key)?, item.location)),
-            "height" => height = Some((cursor.number(context, key)?, item.location)),
+            "width" | "height" => {
+                let at = cursor.here();
+                let size = Some((cursor.integer(context, key)? as f64, at));
+                if key == "width" {
+                    width = size;
+                } else {
+                    height = size;
+                }
+            }
             "angle" => angle = Some(cursor.number(context, key)?),
             "canvasDistance" => canvas_distance = cursor.number(context, key)?,
             "focalLength" | "focal" | "focus" | "focus_distance" | "focusDist"

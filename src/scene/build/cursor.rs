@@ -64,7 +64,15 @@ impl<'a> Cursor<'a> {
             )),
             None => Err(context.error(
                 self.here(),
-                format!("expected a number after '{key}', found {}", self.found()),
+                format!(
+                    "expected a {}number after '{key}', found {}",
+                    if self.peek().is_some_and(Item::is_non_finite_word) {
+                        "finite "
+                    } else {
+                        ""
+                    },
+                    self.found()
+                ),
             )),
         }
     }
@@ -76,14 +84,21 @@ impl<'a> Cursor<'a> {
         Ok(Vec3::new(x, y, z))
     }
 
-    /// An integer (read like `%d`: the fraction is dropped), in `i64` range.
+    /// A whole number (`32`, `32.0`) in `i64` range; `32.5` is an error, as
+    /// the file cannot mean a fraction of a pixel or of a material index.
     pub fn integer(&mut self, context: &Context, key: &str) -> Result<i64, SceneError> {
         let at = self.here();
         let n = self.number(context, key)?;
+        if n.fract() != 0.0 {
+            return Err(context.error(
+                at,
+                format!("expected a whole number after '{key}', found {n}"),
+            ));
+        }
         if n.abs() > 1e15 {
             return Err(context.error(at, format!("the integer after '{key}' is out of range")));
         }
-        Ok(n.trunc() as i64)
+        Ok(n as i64)
     }
 
     /// A word (a path or a name) after `key`.

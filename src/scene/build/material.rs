@@ -284,7 +284,15 @@ fn read_type(
             "DIFF" => Some(Kind::Diffuse),
             "SPEC" => Some(Kind::Specular),
             "REFR" => Some(Kind::Refract),
-            _ => return context.warn(location, format!("unknown material type '{word}'")),
+            _ => {
+                return context.warn(
+                    location,
+                    format!(
+                        "unknown material type '{}'",
+                        crate::scene::error::shown(word)
+                    ),
+                );
+            }
         };
         cursor.next();
         return Ok(());

@@ -13,6 +13,7 @@ mod obj;
 mod obj_check;
 mod objects;
 mod paths;
+mod profile;
 mod shapes;
 mod texture_file;
 mod textures;
@@ -24,7 +25,7 @@ use std::path::Path;
 use crate::color::Color;
 use crate::scene::LoadOptions;
 use crate::scene::ast::{Block, Document, ItemKind};
-use crate::scene::error::{Diagnostic, Location, SceneError};
+use crate::scene::error::{Diagnostic, Location, SceneError, shown};
 use crate::scene::model::{Material, Object, Scene};
 
 pub use cursor::Cursor;
@@ -82,7 +83,11 @@ impl Context<'_> {
         cursor.take_numbers();
         self.warn(
             location,
-            format!("unknown field '{key}' in {block}, skipped"),
+            format!(
+                "unknown field '{}' in {}, skipped",
+                shown(key),
+                shown(block)
+            ),
         )
     }
 
@@ -95,12 +100,20 @@ impl Context<'_> {
         match &item.kind {
             ItemKind::Block(b) => self.warn(
                 item.location,
-                format!("unknown block '{}' in {block}, skipped", b.name),
+                format!(
+                    "unknown block '{}' in {}, skipped",
+                    shown(&b.name),
+                    shown(block)
+                ),
             ),
             ItemKind::Word(w) if w == "-" => Ok(()),
             _ => self.warn(
                 item.location,
-                format!("unexpected {} in {block}, skipped", item.describe()),
+                format!(
+                    "unexpected {} in {}, skipped",
+                    item.describe(),
+                    shown(block)
+                ),
             ),
         }
     }
@@ -153,7 +166,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
             }
             other => context.warn(
                 item.location,
-                format!("unknown top-level block '{other}', skipped"),
+                format!("unknown top-level block '{}', skipped", shown(other)),
             )?,
         }
     }

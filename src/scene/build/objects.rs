@@ -2,16 +2,18 @@
 
 use nalgebra::Rotation3;
 
+use crate::limits::MAX_NESTING;
 use crate::math::{Matrix, Vec3};
 use crate::scene::MissingAssets;
 use crate::scene::ast::{Block, ItemKind};
 use crate::scene::build::meshes::{MaterialChoice, Meshes};
+use crate::scene::build::profile::read_profile;
 use crate::scene::build::shapes::{Fields, build_shape};
 use crate::scene::build::textures::MaterialImages;
 use crate::scene::build::transform::wrap;
 use crate::scene::build::{Context, Cursor, paths, transform};
-use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{CurveKind, Object, Profile};
+use crate::scene::error::{Location, SceneError, shown};
+use crate::scene::model::Object;
 
 /// Walks `Group` blocks; the current material is global state, as in the original.
 pub struct ObjectBuilder {
@@ -21,6 +23,9 @@ pub struct ObjectBuilder {
     /// implicit default (decides whether a mesh's `.mtl` materials apply).
     chosen: Option<MaterialChoice>,
     meshes: Meshes,
+    /// How many objects enclose the one being built (a bound on the
+    /// recursion, for trees that did not come through the parser's own).
+    depth: usize,
 }
 
 impl ObjectBuilder {
@@ -46,6 +51,7 @@ impl ObjectBuilder {
             current: 0,
             chosen: None,
             meshes: Meshes::new(material_count),
+            depth: 0,
         }
     }
 
@@ -118,7 +124,26 @@ impl ObjectBuilder {
     }
 
     /// Any object block; `None` for skipped (unknown or unsupported) blocks.
+    /// Objects nested deeper than `MAX_NESTING` are an error, not a stack overflow.
     pub fn object(
+        &mut self,
+        context: &mut Context,
+        block: &Block,
+        location: Location,
+    ) -> Result<Option<Object>, SceneError> {
+        if self.depth >= MAX_NESTING {
+            return Err(context.error(
+                location,
+                format!("objects nested deeper than {MAX_NESTING} levels"),
+            ));
+        }
+        self.depth += 1;
+        let object = self.nested_object(context, block, location);
+        self.depth -= 1;
+        object
+    }
+
+    fn nested_object(
         &mut self,
         context: &mut Context,
         block: &Block,
@@ -131,7 +156,7 @@ impl ObjectBuilder {
             "Group" => self.group(context, block, location).map(Some),
             "Transform" => transform::build_transform(self, context, block, location).map(Some),
             "TriangleMesh" | "Mesh" => self.mesh(context, block, location).map(Some),
-            "RevSurface" => self.revolution(context, block, location).map(Some),
+            "RevSurface" => self.revolution(context, block, location),
             "BezierCurve" | "BsplineCurve" => {
                 context.warn(location, "a curve outside RevSurface is ignored".into())?;
                 Ok(None)
@@ -145,7 +170,10 @@ impl ObjectBuilder {
                 Ok(None)
             }
             other => {
-                context.warn(location, format!("unknown object '{other}', skipped"))?;
+                context.warn(
+                    location,
+                    format!("unknown object '{}', skipped", shown(other)),
+                )?;
                 Ok(None)
             }
         }
@@ -208,13 +236,14 @@ impl ObjectBuilder {
         })
     }
 
-    /// `RevSurface { [axis v center c] profile Curve { controls [x y z]* } [position v] }`.
+    /// `RevSurface { [axis v center c] profile Curve { controls [x y z]* } [position v] }`;
+    /// `None` (with a warning) when the profile sweeps no area.
     fn revolution(
         &mut self,
         context: &mut Context,
         block: &Block,
         location: Location,
-    ) -> Result<Object, SceneError> {
+    ) -> Result<Option<Object>, SceneError> {
         let mut profile = None;
         let mut outer = Vec::new();
         for item in &block.items {
@@ -230,6 +259,9 @@ impl ObjectBuilder {
         }
         let Some(profile) = profile else {
             return Err(context.error(location, "RevSurface needs a profile curve".into()));
+        };
+        let Some(profile) = profile else {
+            return Ok(None);
         };
         let rest = Block {
             name: block.name.clone(),
@@ -254,51 +286,10 @@ impl ObjectBuilder {
             matrix *= Matrix::new_translation(&center) * turn.to_homogeneous();
         }
         if matrix == Matrix::identity() {
-            return Ok(object);
+            return Ok(Some(object));
         }
-        wrap(context, matrix, object, location)
+        wrap(context, matrix, object, location).map(Some)
     }
-}
-
-fn read_profile(
-    context: &mut Context,
-    curve: &Block,
-    location: Location,
-) -> Result<Profile, SceneError> {
-    let kind = match curve.name.as_str() {
-        "BezierCurve" => CurveKind::Bezier,
-        "BsplineCurve" => CurveKind::Bspline,
-        other => {
-            return Err(context.error(location, format!("unknown profile curve '{other}'")));
-        }
-    };
-    let mut controls = Vec::new();
-    for item in &curve.items {
-        match &item.kind {
-            ItemKind::List(point) => match point.as_slice() {
-                [x, y, ..] if x.is_finite() && y.is_finite() => controls.push([*x, *y]),
-                _ => {
-                    return Err(
-                        context.error(item.location, "a control point needs finite x and y".into())
-                    );
-                }
-            },
-            ItemKind::Word(w) if w == "controls" || w == "num_controls" => {}
-            ItemKind::Number(_) => {}
-            _ => context.skip_item(item, &curve.name)?,
-        }
-    }
-    let needed = match kind {
-        CurveKind::Bezier => 2,
-        CurveKind::Bspline => 4,
-    };
-    if controls.len() < needed {
-        return Err(context.error(
-            location,
-            format!("{} needs at least {needed} control points", curve.name),
-        ));
-    }
-    Ok(Profile { kind, controls })
 }
 
 #[cfg(test)]

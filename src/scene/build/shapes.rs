@@ -1,7 +1,7 @@
 //! Leaf shapes: spheres (static and moving), planes, triangles, rectangles, disks.
 
 use crate::math::{Point3, Vec3, orthonormal_basis};
-use crate::scene::ast::Block;
+use crate::scene::ast::{Block, Item};
 use crate::scene::build::{Context, Cursor};
 use crate::scene::error::{Location, SceneError};
 use crate::scene::model::Object;
@@ -10,8 +10,18 @@ use crate::scene::model::Object;
 pub struct Fields<'a> {
     block: &'a Block,
     location: Location,
-    /// (key, its numbers, where they end, where the key is).
-    entries: Vec<(&'a str, Vec<f64>, Location, Location)>,
+    entries: Vec<Entry<'a>>,
+}
+
+/// One `key numbers*` field.
+struct Entry<'a> {
+    key: &'a str,
+    numbers: Vec<f64>,
+    /// Where the numbers end, and the item there (`None` at the closing brace).
+    after: Location,
+    next: Option<&'a Item>,
+    /// Where the key is.
+    at: Location,
 }
 
 impl<'a> Fields<'a> {
@@ -28,7 +38,13 @@ impl<'a> Fields<'a> {
             match item.word() {
                 Some(key) if known.contains(&key) => {
                     let numbers = cursor.take_numbers();
-                    entries.push((key, numbers, cursor.here(), item.location));
+                    entries.push(Entry {
+                        key,
+                        numbers,
+                        after: cursor.here(),
+                        next: cursor.peek(),
+                        at: item.location,
+                    });
                 }
                 Some(key) => context.skip_field(&mut cursor, key, item.location, &block.name)?,
                 None => context.skip_item(item, &block.name)?,
@@ -42,26 +58,67 @@ impl<'a> Fields<'a> {
     }
 
     pub fn has(&self, key: &str) -> bool {
-        self.entries.iter().any(|(k, ..)| *k == key)
+        self.entries.iter().any(|entry| entry.key == key)
+    }
+
+    fn last(&self, key: &str) -> Option<&Entry<'a>> {
+        self.entries.iter().rev().find(|entry| entry.key == key)
     }
 
     /// The numbers of the last `key` field, at least `count` of them, all finite.
     fn numbers(&self, context: &Context, key: &str, count: usize) -> Result<&[f64], SceneError> {
-        let Some((_, numbers, after, _)) = self.entries.iter().rev().find(|(k, ..)| *k == key)
-        else {
+        let Some(entry) = self.last(key) else {
             return Err(context.error(self.location, format!("{} needs '{key}'", self.block.name)));
         };
+        let numbers = &entry.numbers;
         match numbers.get(..count) {
             Some(values) if values.iter().all(|v| v.is_finite()) => Ok(values),
-            Some(_) => Err(context.error(*after, format!("a number after '{key}' is too large"))),
-            None => Err(context.error(
-                *after,
-                format!(
-                    "expected {count} numbers after '{key}', found {}",
-                    numbers.len()
-                ),
-            )),
+            Some(_) => {
+                Err(context.error(entry.after, format!("a number after '{key}' is too large")))
+            }
+            None => {
+                let next = entry.next.map_or_else(|| "'}'".to_string(), Item::describe);
+                let found = match numbers.len() {
+                    0 => next,
+                    n => format!("{n} then {next}"),
+                };
+                let finite = match entry.next {
+                    Some(item) if item.is_non_finite_word() => "finite ",
+                    _ => "",
+                };
+                let expected = match count {
+                    1 => format!("a {finite}number"),
+                    n => format!("{n} {finite}numbers"),
+                };
+                Err(context.error(
+                    entry.after,
+                    format!("expected {expected} after '{key}', found {found}"),
+                ))
+            }
         }
+    }
+
+    /// The `radius` of a round shape: zero (no surface) and negative radii
+    /// (their size is used) are read with a warning at the field.
+    fn radius(&self, context: &mut Context) -> Result<f64, SceneError> {
+        let radius = self.number(context, "radius")?;
+        let at = self.last("radius").map_or(self.location, |entry| entry.at);
+        let shape = &self.block.name;
+        if radius == 0.0 {
+            context.warn(
+                at,
+                format!("a {shape} of radius 0 has no surface: it is left out"),
+            )?;
+        } else if radius < 0.0 {
+            context.warn(
+                at,
+                format!(
+                    "negative radius {radius}: the {shape} of radius {} is used",
+                    -radius
+                ),
+            )?;
+        }
+        Ok(radius.abs())
     }
 
     pub fn number(&self, context: &Context, key: &str) -> Result<f64, SceneError> {
@@ -92,9 +149,9 @@ impl<'a> Fields<'a> {
         keys: &[&str],
         why: &str,
     ) -> Result<(), SceneError> {
-        for (key, _, _, at) in &self.entries {
-            if keys.contains(key) {
-                context.not_rendered(*at, key, why)?;
+        for entry in &self.entries {
+            if keys.contains(&entry.key) {
+                context.not_rendered(entry.at, entry.key, why)?;
             }
         }
         Ok(())
@@ -130,7 +187,7 @@ pub fn build_shape(
             }
             Object::Sphere {
                 center: f.vec3(context, "center")?,
-                radius: f.number(context, "radius")?.abs(),
+                radius: f.radius(context)?,
                 motion,
                 material,
             }
@@ -142,7 +199,7 @@ pub fn build_shape(
             let start = f.vec3(context, "center0")?;
             Object::Sphere {
                 center: start,
-                radius: f.number(context, "radius")?.abs(),
+                radius: f.radius(context)?,
                 motion: f.vec3(context, "center1")? - start,
                 material,
             }
@@ -157,7 +214,7 @@ pub fn build_shape(
             let start = f.vec3(context, "origCenter")?;
             Object::Sphere {
                 center: start,
-                radius: f.number(context, "radius")?.abs(),
+                radius: f.radius(context)?,
                 motion: f.vec3(context, "center")? - start,
                 material,
             }
@@ -253,7 +310,7 @@ pub fn build_shape(
             Object::Disk {
                 center: f.vec3(context, "center")?,
                 normal: f.nonzero(context, "normal")?,
-                radius: f.number(context, "radius")?.abs(),
+                radius: f.radius(context)?,
                 material,
             }
         }
