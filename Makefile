@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench converge lookalike crosscheck crosscheck-glossy mitsuba-converge gallery clean
+.PHONY: build render test lint bench converge lookalike crosscheck crosscheck-glossy mitsuba-converge gallery fuzz fuzz-seeds clean
 
 build:
 	$(CARGO) build --release
@@ -66,6 +66,53 @@ gallery: build
 	python3 -m venv $(VENV)
 	$(VENV)/bin/pip install -q numpy pillow
 	$(VENV)/bin/python scripts/gallery.py
+
+# Coverage-guided fuzzing with cargo-fuzz (README, "Fuzzing"; needs
+# `cargo install cargo-fuzz` and a nightly toolchain): each target of
+# fuzz/fuzz_targets runs FUZZ_SECONDS (scene_text SCENE_TEXT_SECONDS) in
+# turn, one libFuzzer job that keeps going past crashes, timeouts and OOMs
+# (saved in fuzz/artifacts/<target>/), then its execution count is printed.
+# Seeds are copied at run time from testcases/, mesh/, texture/ and
+# ../shared/ into fuzz/seeds/ (git-ignored, like fuzz/corpus/).
+FUZZ_SECONDS ?= 300
+SCENE_TEXT_SECONDS ?= $(FUZZ_SECONDS)
+FUZZ_TARGETS ?= scene_text obj texture pfm
+FUZZ_SANITIZER ?= none
+FUZZ_FLAGS := -rss_limit_mb=1024 -timeout=10 -max_len=1048576
+FUZZ_DIR := $(CURDIR)/fuzz
+# Run by absolute path: libFuzzer's -fork restarts the binary by argv[0],
+# and each target changes its working directory into its sandbox.
+FUZZ_BIN := $(FUZZ_DIR)/target/$(shell rustc -vV | sed -n 's/^host: //p')/release
+SHARED ?= ../shared
+# Copies the files that `find` lists under name = their hash (no clashes).
+seed = mkdir -p $(FUZZ_DIR)/seeds/$(1) && find $(2) -type f -size -1024k $(3) 2>/dev/null | \
+	while read -r f; do cp "$$f" "$(FUZZ_DIR)/seeds/$(1)/$$(sha1sum < "$$f" | cut -c1-40)"; done
+
+fuzz-seeds: build
+	rm -rf $(FUZZ_DIR)/seeds
+	$(call seed,scene_text,testcases $(SHARED),-name '*.txt')
+	$(call seed,obj,mesh $(SHARED),\( -name '*.obj' -o -name '*.mtl' \))
+	$(call seed,texture,texture $(SHARED),-size -300k \( -iname '*.bmp' -o -iname '*.png' -o -iname '*.jpg' -o -iname '*.tga' \))
+	$(call seed,pfm,$(SHARED),-size -100k \( -iname '*.pfm' -o -iname '*.exr' -o -iname '*.bmp' -o -iname '*.png' \))
+	for format in pfm exr; do $(BIN) render testcases/smallpt.txt --width 8 --height 6 --spp 1 \
+		--quiet -o $(FUZZ_DIR)/seeds/pfm/smallpt.$$format > /dev/null; done
+	rm -f $(FUZZ_DIR)/seeds/pfm/*.json
+
+fuzz: fuzz-seeds
+	cd $(FUZZ_DIR) && $(CARGO) +nightly fuzz build -s $(FUZZ_SANITIZER)
+	mkdir -p $(FUZZ_DIR)/logs
+	for target in $(FUZZ_TARGETS); do \
+		seconds=$(FUZZ_SECONDS); [ $$target = scene_text ] && seconds=$(SCENE_TEXT_SECONDS); \
+		mkdir -p $(FUZZ_DIR)/corpus/$$target $(FUZZ_DIR)/artifacts/$$target; \
+		$(FUZZ_BIN)/$$target $(FUZZ_DIR)/corpus/$$target $(FUZZ_DIR)/seeds/$$target \
+			-max_total_time=$$seconds $(FUZZ_FLAGS) -fork=1 \
+			-ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
+			-artifact_prefix=$(FUZZ_DIR)/artifacts/$$target/ \
+			> $(FUZZ_DIR)/logs/$$target.log 2>&1; \
+		runs=$$(grep -oE '^#[0-9]+' $(FUZZ_DIR)/logs/$$target.log | tail -n 1 | tr -d '#'); \
+		found=$$(ls $(FUZZ_DIR)/artifacts/$$target | wc -l); \
+		echo "$$target: $${runs:-0} executions in $$seconds s ($$(( $${runs:-0} / $$seconds )) exec/s), $$found files in fuzz/artifacts/$$target"; \
+	done
 
 clean:
 	$(CARGO) clean

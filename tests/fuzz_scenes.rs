@@ -1,4 +1,7 @@
-//! Deterministic mutation fuzzing: corrupted corpus scenes give errors, never panics.
+//! Deterministic mutation fuzzing: corrupted corpus scenes give errors, never
+//! panics, and the ones that still build render (4x4 pixels, 1 spp, under
+//! the scene's own look with its integrator and with the path integrator)
+//! without a panic or a non-finite pixel.
 
 mod common;
 
@@ -6,10 +9,18 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use pathtracer::integrator::Integrator;
+use pathtracer::look::{Estimator, Look};
+use pathtracer::render::{RenderSettings, render};
 use pathtracer::rng::Rng;
+use pathtracer::sampler::SamplerKind;
+use pathtracer::scene::model::Scene;
 use pathtracer::scene::{LoadOptions, build, parse};
+use pathtracer::world::World;
 
 const MUTANTS_PER_FILE: usize = 300;
+/// Failures shown in full (the others are counted).
+const SHOWN_FAILURES: usize = 5;
 /// Scenes naming an asset bigger than this are built with their assets unreachable.
 const MAX_ASSET_BYTES: u64 = 200_000;
 
@@ -117,6 +128,60 @@ fn small_assets(text: &str, base: &Path) -> bool {
         .all(|w| std::fs::metadata(base.join(w)).map_or(true, |m| m.len() <= MAX_ASSET_BYTES))
 }
 
+/// Renders `scene` at 4x4 and 1 spp under its own look, with the look's
+/// integrator and with the path integrator; an error names what went wrong.
+fn render_tiny(mut scene: Scene) -> Result<(), String> {
+    let (look, _) = Look::detect(&scene);
+    look.adapt(&mut scene);
+    let world = World::build_with(&scene, look.one_sided_planes);
+    let own = match look.estimator {
+        Estimator::PathTracing => Integrator::Path,
+        Estimator::RayCasting => Integrator::RayCast,
+    };
+    let integrators: &[Integrator] = if own == Integrator::Path {
+        &[Integrator::Path]
+    } else {
+        &[own, Integrator::Path]
+    };
+    for &integrator in integrators {
+        let settings = RenderSettings {
+            width: 4,
+            height: 4,
+            spp: 1,
+            seed: 1,
+            threads: Some(1),
+            integrator,
+            max_depth: look.max_depth,
+            sampler: SamplerKind::Sobol,
+            progress: false,
+            clamp: None,
+            light_paths: true,
+            look,
+        };
+        // A refusal is an answer; only panics and bad pixels are failures.
+        let Ok((image, _)) = render(&scene, &world, &settings) else {
+            continue;
+        };
+        if image.pixels.iter().any(|p| !p.is_finite()) {
+            return Err(format!(
+                "a non-finite pixel ({} look, {} integrator)",
+                look.name,
+                integrator.name()
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The message a caught panic carried.
+fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "(no message)".to_string())
+}
+
 #[test]
 fn mutated_scenes_never_panic() {
     let Some(shared) = common::shared() else {
@@ -125,8 +190,8 @@ fn mutated_scenes_never_panic() {
     let empty = std::env::temp_dir().join(format!("pt-fuzz-empty-{}", std::process::id()));
     let _ = std::fs::create_dir_all(&empty);
     let started = Instant::now();
-    let mut total = 0usize;
-    let mut built = 0usize;
+    let (mut total, mut built) = (0usize, 0usize);
+    let mut failures: Vec<String> = Vec::new();
     for (index, (file, base)) in common::corpus(&shared).iter().enumerate() {
         let Ok(original) = std::fs::read(file) else {
             continue;
@@ -152,21 +217,46 @@ fn mutated_scenes_never_panic() {
                 parse(&mutant, &path).and_then(|doc| build(&doc, &path, &options))
             }));
             total += 1;
-            built += usize::from(matches!(outcome, Ok(Ok(_))));
-            if outcome.is_err() {
-                let saved = empty.join("panicking-mutant.txt");
+            let failure = match outcome {
+                Err(payload) => Some(format!(
+                    "panicked in parse or build: {}",
+                    panic_message(&*payload)
+                )),
+                Ok(Err(_)) => None,
+                Ok(Ok(scene)) => {
+                    built += 1;
+                    match catch_unwind(AssertUnwindSafe(|| render_tiny(scene))) {
+                        Ok(Ok(())) => None,
+                        Ok(Err(message)) => Some(message),
+                        Err(payload) => Some(format!(
+                            "panicked in the render: {}",
+                            panic_message(&*payload)
+                        )),
+                    }
+                }
+            };
+            if let Some(message) = failure {
+                let saved = empty.join(format!("failing-mutant-{}.txt", failures.len()));
                 let _ = std::fs::write(&saved, &bytes);
-                panic!(
-                    "a mutant of {} panicked; saved to {}",
+                failures.push(format!(
+                    "a mutant of {} (saved to {}): {message}\n--- mutated scene ---\n{mutant}\n---",
                     file.display(),
                     saved.display()
-                );
+                ));
             }
         }
     }
     println!(
-        "{total} mutants ({built} still build) in {:.1} s",
+        "{total} mutants ({built} still build and were rendered) in {:.1} s",
         started.elapsed().as_secs_f64()
     );
     assert!(total >= 10_000, "only {total} mutants");
+    assert!(built >= 1_000, "only {built} mutants rendered");
+    assert!(
+        failures.is_empty(),
+        "{} mutants failed; the first {}:\n{}",
+        failures.len(),
+        SHOWN_FAILURES.min(failures.len()),
+        failures[..SHOWN_FAILURES.min(failures.len())].join("\n")
+    );
 }

@@ -1,0 +1,72 @@
+//! Scene text to a 4x4 image at 1 sample per pixel: every stage a scene goes
+//! through (parse, build, the look's adaptations, the world, each integrator)
+//! at a size that costs almost nothing.
+
+use std::path::Path;
+
+use pathtracer::integrator::Integrator;
+use pathtracer::look::Look;
+use pathtracer::render::{RenderSettings, render};
+use pathtracer::sampler::SamplerKind;
+use pathtracer::scene::model::Scene;
+use pathtracer::scene::{LoadOptions, build, parse, summary};
+use pathtracer::world::World;
+
+/// Pixels on each side of the tiny image.
+pub const SIDE: u32 = 4;
+
+/// Parses and builds `text` as the file `file` (its relative names resolve
+/// against `options.base`, `file`'s folder and the working directory), and
+/// formats what `check` would print: the error, or the warnings and summary.
+pub fn build_text(text: &str, file: &Path, options: &LoadOptions) -> Option<Scene> {
+    let built = parse(text, file).and_then(|document| build(&document, file, options));
+    match built {
+        Ok(scene) => {
+            let printed: usize = scene.warnings.iter().map(|w| w.to_string().len()).sum();
+            std::hint::black_box((printed, summary(&scene)));
+            Some(scene)
+        }
+        Err(error) => {
+            std::hint::black_box(error.to_string());
+            None
+        }
+    }
+}
+
+/// The scene's world under its own look (textures turned as that look reads them).
+pub fn prepare(scene: &mut Scene) -> (Look, World) {
+    let (look, _) = Look::detect(scene);
+    look.adapt(scene);
+    let world = World::build_with(scene, look.one_sided_planes);
+    (look, world)
+}
+
+/// Renders `scene` at [`SIDE`]x[`SIDE`], 1 spp, with each integrator under
+/// the scene's look. A render error is fine (hostile input may be refused);
+/// the image must have its size and no pixel may be NaN or infinite.
+pub fn render_every_integrator(scene: &Scene, world: &World, look: Look) {
+    for integrator in Integrator::ALL {
+        let settings = RenderSettings {
+            width: SIDE,
+            height: SIDE,
+            spp: 1,
+            seed: 1,
+            threads: Some(1),
+            integrator,
+            max_depth: look.max_depth,
+            sampler: SamplerKind::Sobol,
+            progress: false,
+            clamp: None,
+            light_paths: true,
+            look,
+        };
+        if let Ok((image, _)) = render(scene, world, &settings) {
+            assert_eq!(image.pixels.len(), (SIDE * SIDE) as usize);
+            assert!(
+                image.pixels.iter().all(|p| p.is_finite()),
+                "a non-finite pixel under the {} integrator",
+                integrator.name()
+            );
+        }
+    }
+}
