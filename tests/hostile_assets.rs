@@ -79,8 +79,8 @@ fn a_16384_square_scene_passed_check_and_then_allocated_13_gb() {
         "Sphere { center 0 0 0 radius 1 }",
     );
     let error = check_fails(&file, &[]);
-    // Located at the scene's width, with what is needed, the budget and the flag.
-    assert!(error.contains("scene.txt:6:3:"), "{error}");
+    // Located at the value of the scene's width, with what is needed, the budget and the flag.
+    assert!(error.contains("scene.txt:6:9:"), "{error}");
     assert!(
         error.contains("GiB") && error.contains("4.0 GiB"),
         "{error}"
