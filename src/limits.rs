@@ -29,3 +29,10 @@ pub const MAX_PATH_DEPTH: u32 = 10_000;
 
 /// Longest token shown whole in a message; longer ones are cut with an ellipsis.
 pub const MAX_SHOWN_TOKEN: usize = 40;
+
+/// Longest file name (one path component) in bytes: NAME_MAX of Linux file
+/// systems. Temporary names are cut to fit it; longer output names are refused.
+pub const MAX_FILE_NAME_BYTES: usize = 255;
+
+/// Most symlinks followed from an output path to the file it names.
+pub const MAX_SYMLINK_HOPS: usize = 40;
