@@ -19,6 +19,7 @@ pub mod film;
 pub mod geometry;
 pub mod image_io;
 pub mod integrator;
+pub mod interrupt;
 pub mod lights;
 pub mod limits;
 pub mod look;

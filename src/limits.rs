@@ -218,6 +218,13 @@ pub fn show_bytes(bytes: u64) -> String {
     format!("{bytes} bytes")
 }
 
+/// Longest name of one file or folder, in bytes (Linux's NAME_MAX): a
+/// temporary's name is cut to fit it.
+pub const MAX_FILE_NAME_BYTES: usize = 255;
+
+/// Most symlinks followed from an output path to the file it names.
+pub const MAX_SYMLINK_HOPS: usize = 40;
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -37,7 +37,11 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let result = match Cli::parse().command {
+    let command = Cli::parse().command;
+    if let Err(message) = pathtracer::interrupt::install() {
+        eprintln!("warning: {message}");
+    }
+    let result = match command {
         Command::Check(args) => commands::check::run(&args),
         Command::Render(args) => commands::render::run(&args),
         Command::Compare(args) => commands::compare::run(&args),

@@ -6,7 +6,8 @@ use std::path::PathBuf;
 use clap::Args;
 
 use pathtracer::image_io::{
-    Encoding, check_writable, is_hdr, read_image, read_image_encoded, write_encoded,
+    Encoding, PendingFile, check_writable, encode_image, is_hdr, read_image, read_image_encoded,
+    refuse_inputs,
 };
 use pathtracer::metrics::flip::DEFAULT_PIXELS_PER_DEGREE;
 use pathtracer::metrics::report::{Encoded, evaluate};
@@ -33,9 +34,19 @@ pub struct CompareArgs {
 }
 
 pub fn run(args: &CompareArgs) -> Result<(), String> {
-    if let Some(diff) = &args.diff {
-        check_writable(diff, 1, 1)?;
-    }
+    let mut diff_file = match &args.diff {
+        Some(diff) => {
+            check_writable(diff, 1, 1)?;
+            let file = PendingFile::reserve(diff)?;
+            let inputs = [
+                ("the image", args.image.as_path()),
+                ("the reference", args.reference.as_path()),
+            ];
+            refuse_inputs(&[&file], &inputs)?;
+            Some(file)
+        }
+        None => None,
+    };
     let (test, test_encoding) = read_image_encoded(&args.image)?;
     let (reference, reference_encoding) = read_image_encoded(&args.reference)?;
     let evaluation = evaluate(
@@ -49,14 +60,16 @@ pub fn run(args: &CompareArgs) -> Result<(), String> {
         },
         args.ppd,
     )?;
-    if let Some(diff) = &args.diff {
+    if let Some(mut diff) = diff_file.take() {
         let map = evaluation.error_map.as_ref().ok_or_else(|| {
             format!(
                 "--diff needs images of the same size ({}x{} against a {}x{} reference)",
                 test.width, test.height, reference.width, reference.height
             )
         })?;
-        map.to_magma().write(diff)?;
+        let heat = map.to_magma().to_image();
+        diff.write(&encode_image(diff.path(), &heat, &Encoding::gamma(None))?)?;
+        diff.commit()?;
     }
     if args.json {
         say!("{}", evaluation.report.to_json());
@@ -95,5 +108,10 @@ pub fn convert(args: &ConvertArgs) -> Result<(), String> {
             args.output.display()
         );
     }
-    write_encoded(&args.output, &read_image(&args.input)?, &encoding)
+    check_writable(&args.output, 1, 1)?;
+    let mut output = PendingFile::reserve(&args.output)?;
+    refuse_inputs(&[&output], &[("the input", args.input.as_path())])?;
+    let image = read_image(&args.input)?;
+    output.write(&encode_image(&args.output, &image, &encoding)?)?;
+    output.commit()
 }

@@ -7,7 +7,9 @@ use std::path::PathBuf;
 use clap::Args;
 
 use pathtracer::converge::{Reach, converge_within, read_csv_series, time_to_reach, to_csv};
-use pathtracer::image_io::{read_image, write_image};
+use pathtracer::image_io::{
+    Encoding, PendingFile, commit_together, encode_image, read_image, refuse_inputs,
+};
 use pathtracer::plot::{Series, check_plottable, log_log_svg};
 use pathtracer::render::render_within;
 
@@ -40,15 +42,43 @@ pub struct ConvergeArgs {
 }
 
 pub fn run(args: &ConvergeArgs) -> Result<(), String> {
+    // Every output's temporary exists before the scene is read.
+    let csv = args
+        .csv
+        .clone()
+        .unwrap_or_else(|| default_output(&args.scene, "_converge.csv"));
+    let svg = args
+        .plot
+        .clone()
+        .unwrap_or_else(|| default_output(&args.scene, "_converge.svg"));
+    let mut csv_file = PendingFile::reserve(&csv)?;
+    let mut svg_file = PendingFile::reserve(&svg)?;
+    let mut reference_file = match &args.reference {
+        Some(_) => None,
+        None => Some(PendingFile::reserve(&default_output(
+            &args.scene,
+            "_reference.pfm",
+        ))?),
+    };
     let mut scene = load_for_render(&args.scene, &args.sampling.scene)?;
+    let mut inputs = super::render::scene_inputs(&args.scene, &scene);
+    if let Some(reference) = &args.reference {
+        inputs.push(("the reference", reference.as_path()));
+    }
+    let outputs: Vec<&PendingFile> = [&csv_file, &svg_file]
+        .into_iter()
+        .chain(reference_file.as_ref())
+        .collect();
+    refuse_inputs(&outputs, &inputs)?;
     let settings = args.sampling.settings(&scene, args.max_spp, false);
     args.sampling.check_size(&settings)?;
     let budget = args.sampling.scene.memory_budget();
     let world = prepare(&mut scene, &settings);
-    let reference = match &args.reference {
-        Some(path) => read_image(path)?,
-        None => {
-            let path = default_output(&args.scene, "_reference.pfm");
+    let reference = match (&args.reference, reference_file.take()) {
+        (Some(path), _) => read_image(path)?,
+        (None, None) => return Err("converge: no reference to read or render".to_string()),
+        (None, Some(mut file)) => {
+            let path = file.path().to_path_buf();
             let mut reference_settings = args.sampling.settings(&scene, args.reference_spp, true);
             reference_settings.seed = settings.seed.wrapping_add(REFERENCE_SEED_OFFSET);
             eprintln!(
@@ -58,7 +88,8 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
             );
             let (image, stats) = render_within(&scene, &world, &reference_settings, budget)?;
             eprintln!("reference took {:.1} s", stats.seconds);
-            write_image(&path, &image, None)?;
+            file.write(&encode_image(&path, &image, &Encoding::gamma(None))?)?;
+            file.commit()?;
             image
         }
     };
@@ -81,11 +112,7 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
             )
         },
     )?;
-    let csv = args
-        .csv
-        .clone()
-        .unwrap_or_else(|| default_output(&args.scene, "_converge.csv"));
-    write_text(&csv, &to_csv(&points))?;
+    csv_file.write(to_csv(&points).as_bytes())?;
     let name = args
         .scene
         .file_stem()
@@ -95,14 +122,8 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
         name: "pathtracer".into(),
         points: points.iter().map(|p| (p.seconds, p.rel_mse)).collect(),
     }];
-    let svg = args
-        .plot
-        .clone()
-        .unwrap_or_else(|| default_output(&args.scene, "_converge.svg"));
-    write_text(
-        &svg,
-        &log_log_svg(&name, "seconds", "relative MSE", &series),
-    )?;
+    svg_file.write(log_log_svg(&name, "seconds", "relative MSE", &series).as_bytes())?;
+    commit_together(vec![csv_file, svg_file])?;
     say!("wrote {} and {}", csv.display(), svg.display());
     Ok(())
 }
@@ -127,6 +148,7 @@ pub struct PlotArgs {
 }
 
 pub fn plot(args: &PlotArgs) -> Result<(), String> {
+    let mut output = PendingFile::reserve(&args.output)?;
     let mut series = Vec::new();
     for curve in &args.curves {
         let (name, path) = match curve.split_once('=') {
@@ -140,6 +162,7 @@ pub fn plot(args: &PlotArgs) -> Result<(), String> {
                 (name, path)
             }
         };
+        refuse_inputs(&[&output], &[("a curve to plot", path.as_path())])?;
         let text =
             std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
         let points =
@@ -156,10 +179,6 @@ pub fn plot(args: &PlotArgs) -> Result<(), String> {
     }
     check_plottable(&series)?;
     let svg = log_log_svg(&args.title, "seconds", &args.column, &series);
-    write_text(&args.output, &svg)
-}
-
-/// Writes a text file whole or not at all.
-fn write_text(path: &std::path::Path, text: &str) -> Result<(), String> {
-    pathtracer::image_io::write_atomically(path, text.as_bytes())
+    output.write(svg.as_bytes())?;
+    output.commit()
 }

@@ -11,7 +11,9 @@ use std::time::Instant;
 
 use clap::Args;
 
-use pathtracer::image_io::{DisplayImage, read_image_encoded, write_atomically, write_image};
+use pathtracer::image_io::{
+    DisplayImage, PendingFile, commit_together, read_image_encoded, refuse_inputs, write_image,
+};
 use pathtracer::metrics::resample::box_resize;
 use pathtracer::pairs::measure::measure;
 use pathtracer::pairs::report::{Figures, Row, RunDescription, csv, html, summary};
@@ -53,6 +55,14 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
         .into_iter()
         .filter(|p| args.only == "all" || p.confidence == Confidence::Ok)
         .collect();
+    // The page and the table are reserved before any pair is rendered.
+    let mut csv_file = PendingFile::reserve(&args.out.join("lookalike.csv"))?;
+    let index = args.out.join("index.html");
+    let mut index_file = PendingFile::reserve(&index)?;
+    refuse_inputs(
+        &[&csv_file, &index_file],
+        &[("the pairs file", args.pairs.as_path())],
+    )?;
     let images = args.out.join("images");
     std::fs::create_dir_all(&images)
         .map_err(|e| format!("{}: cannot create directory: {e}", images.display()))?;
@@ -124,9 +134,9 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
             sampling.seed
         ),
     };
-    write_atomically(&args.out.join("lookalike.csv"), csv(&rows).as_bytes())?;
-    let index = args.out.join("index.html");
-    write_atomically(&index, html(&rows, &run).as_bytes())?;
+    csv_file.write(csv(&rows).as_bytes())?;
+    index_file.write(html(&rows, &run).as_bytes())?;
+    commit_together(vec![csv_file, index_file])?;
     say!(
         "{} in {:.0} s; {}",
         summary(&rows),

@@ -1,13 +1,15 @@
 //! `pathtracer render`: a scene file to an image, with a one-line summary.
 
 use crate::commands::prepare;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use clap::Args;
 
 use pathtracer::adaptive::{StoppingRule, render_adaptive};
-use pathtracer::image_io::{check_writable, is_hdr, write_atomically, write_encoded};
+use pathtracer::image_io::{
+    PendingFile, check_writable, commit_together, encode_image, is_hdr, refuse_inputs,
+};
 use pathtracer::integrator::{Integrator, SceneView};
 use pathtracer::render::{RenderSettings, SamplingPlan, render_into};
 use pathtracer::scene::model::Scene;
@@ -51,11 +53,21 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         .clone()
         .unwrap_or_else(|| default_output(&args.scene, ".bmp"));
     // Refuse an unwritable output or a bad encoding before the scene is
-    // read and rendered.
+    // read and rendered: the temporaries of the image and its sidecar exist
+    // from here on.
     check_writable(&output, 1, 1)?;
     let encoding = args.encoding.encoding();
     encoding.check()?;
+    let mut image_file = PendingFile::reserve(&output)?;
+    let mut sidecar_file = match is_hdr(&output) {
+        true => Some(PendingFile::reserve(&sidecar_path(&output))?),
+        false => None,
+    };
     let mut scene = load_for_render(&args.scene, &args.sampling.scene)?;
+    let outputs: Vec<&PendingFile> = std::iter::once(&image_file)
+        .chain(sidecar_file.as_ref())
+        .collect();
+    refuse_inputs(&outputs, &scene_inputs(&args.scene, &scene))?;
     let settings = args.sampling.settings(&scene, args.spp, !args.quiet);
     check_writable(&output, settings.width as usize, settings.height as usize)?;
     let world_start = Instant::now();
@@ -75,14 +87,11 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     if args.stats {
         print_phases(&scene, &world, &settings, world_seconds, stats.seconds);
     }
-    write_encoded(&output, &image, &encoding)?;
+    image_file.write(&encode_image(&output, &image, &encoding)?)?;
     let pixels = (settings.width as u64 * settings.height as u64).max(1);
-    if is_hdr(&output) {
+    if let Some(sidecar) = &mut sidecar_file {
         // HDR images are measurements: say how they were made, next to
         // them, and how an 8-bit output would have encoded them.
-        let mut sidecar = output.clone().into_os_string();
-        sidecar.push(".json");
-        let sidecar = std::path::PathBuf::from(sidecar);
         let json = format!(
             "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}, \"light_paths\": {}, \"look\": \"{}\", \"gamma\": {}, \"exposure\": {}, \"tonemap\": \"{}\"}}\n",
             args.scene.display().to_string(),
@@ -102,8 +111,11 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
             encoding.exposure,
             encoding.tonemap.name(),
         );
-        write_atomically(&sidecar, json.as_bytes())?;
+        sidecar.write(json.as_bytes())?;
     }
+    // The sidecar first, the image last: a new image always finds its own
+    // sidecar beside it; a failure leaves both as they were.
+    commit_together(sidecar_file.into_iter().chain([image_file]).collect())?;
     let (look, why) = args.sampling.look(&scene);
     say!(
         "{}: look {} ({why}), {} integrator, {}x{}, {:.1} spp spent, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped, {} fireflies{}",
@@ -124,6 +136,26 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         }
     );
     Ok(())
+}
+
+/// `IMAGE.json`, the sidecar of an HDR image.
+fn sidecar_path(image: &Path) -> PathBuf {
+    let mut sidecar = image.as_os_str().to_os_string();
+    sidecar.push(".json");
+    PathBuf::from(sidecar)
+}
+
+/// The files a render reads, which no output may replace.
+pub fn scene_inputs<'a>(scene_file: &'a Path, scene: &'a Scene) -> Vec<(&'a str, &'a Path)> {
+    std::iter::once(("the scene file", scene_file))
+        .chain(
+            scene
+                .load
+                .assets
+                .iter()
+                .map(|asset| ("a file the scene reads", asset.as_path())),
+        )
+        .collect()
 }
 
 /// `--stats`: the time of each phase, and the machinery a scene did not need.

@@ -5,12 +5,17 @@
 //! a read file is recognised by its content. Every writer encodes the whole file
 //! in memory first and hands the bytes to [`atomic::write_file`], so the
 //! destination either receives a complete image or is left exactly as it was.
+//! Commands that work long reserve their outputs first ([`PendingFile`]: the
+//! temporary exists before the work starts), refuse outputs that are inputs
+//! ([`refuse_inputs`]) and put them in place together ([`commit_together`]).
 
 mod atomic;
 mod bmp_format;
+mod commit;
 mod decode;
 mod display;
 mod exr_format;
+mod inputs;
 mod pfm;
 mod png_format;
 mod quantize;
@@ -20,9 +25,12 @@ pub use tonemap::{Encoding, Tonemap};
 
 /// Writes any bytes to a file whole or not at all (temporary file + rename).
 pub use atomic::write_file as write_atomically;
+pub use atomic::{PendingFile, TEMPORARY_MARK};
 pub use bmp_format::check_complete as check_bmp_complete;
+pub use commit::commit_together;
 pub use decode::{check_decodable, describe_error};
 pub use display::DisplayImage;
+pub use inputs::refuse_inputs;
 
 use std::path::Path;
 
@@ -146,6 +154,11 @@ pub fn write_image(path: &Path, image: &Image, gamma: Option<f64>) -> Result<(),
 /// [`write_image`] with an exposure and a tone curve for 8-bit output
 /// (`.bmp`, `.png`) as `encoding` says; `.pfm` and `.exr` stay linear.
 pub fn write_encoded(path: &Path, image: &Image, encoding: &Encoding) -> Result<(), String> {
+    atomic::write_file(path, &encode_image(path, image, encoding)?)
+}
+
+/// The bytes of the file [`write_encoded`] writes, for a [`PendingFile`].
+pub fn encode_image(path: &Path, image: &Image, encoding: &Encoding) -> Result<Vec<u8>, String> {
     let format = Format::from_path(path)?;
     validate(path, image)?;
     let bytes = match format {
@@ -155,7 +168,7 @@ pub fn write_encoded(path: &Path, image: &Image, encoding: &Encoding) -> Result<
         Format::Exr => exr_format::encode(image),
     }
     .map_err(|e| format!("{}: {e}", path.display()))?;
-    atomic::write_file(path, &bytes)
+    Ok(bytes)
 }
 
 /// Reads a BMP, PNG, PFM or EXR image (LDR values mapped to [0, 1] without

@@ -78,6 +78,9 @@ pub struct LoadStats {
     pub meshes_loaded: usize,
     /// Distinct images decoded.
     pub textures_loaded: usize,
+    /// Files read besides the scene file (meshes, `.mtl` libraries,
+    /// textures, texture descriptors), as resolved: outputs must not be one.
+    pub assets: Vec<std::path::PathBuf>,
 }
 
 /// Which family of the PA grammar a file was written in (see docs/scene-format.md).

@@ -72,9 +72,12 @@ pub fn read(context: &mut Context, named: &PathRef) -> Result<Descriptor, SceneE
         options: context.options,
         dialect: context.dialect,
         warnings: Vec::new(),
+        assets: Vec::new(),
     };
     let result = describe(&mut inner, &document.items, context.file);
     context.warnings.append(&mut inner.warnings);
+    context.assets.push(file.clone());
+    context.assets.append(&mut inner.assets);
     result
 }
 

@@ -84,6 +84,11 @@ impl Meshes {
             let started = std::time::Instant::now();
             let loaded = obj::load_obj(path).map_err(|e| context.error(at, e))?;
             self.seconds += started.elapsed().as_secs_f64();
+            context.assets.push(path.to_path_buf());
+            if let Some(materials) = &loaded.materials {
+                let libraries = materials.libraries.iter().map(|l| l.path.clone());
+                context.assets.extend(libraries);
+            }
             for warning in loaded.warnings {
                 context.warn(at, warning)?;
             }

@@ -37,6 +37,10 @@ pub struct Context<'a> {
     pub options: &'a LoadOptions,
     pub dialect: crate::scene::model::Dialect,
     pub warnings: Vec<Diagnostic>,
+    /// Files read besides the scene file (see [`LoadStats::assets`]).
+    ///
+    /// [`LoadStats::assets`]: crate::scene::model::LoadStats::assets
+    pub assets: Vec<std::path::PathBuf>,
 }
 
 impl Context<'_> {
@@ -127,6 +131,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         options,
         dialect,
         warnings: Vec::new(),
+        assets: Vec::new(),
     };
     let mut camera_block = None;
     let mut background = Color::BLACK;
@@ -211,6 +216,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         meshes_loaded: objects.meshes_loaded(),
         texture_seconds: texture_start.elapsed().as_secs_f64(),
         textures_loaded: textures.len(),
+        assets: std::mem::take(&mut context.assets),
         ..Default::default()
     };
     Ok(Scene {

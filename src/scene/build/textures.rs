@@ -253,6 +253,7 @@ impl Loader {
             )
         })?;
         let index = self.push(texture);
+        context.assets.push(file.clone());
         self.cache.insert(file, index);
         Ok(Some(index))
     }

@@ -1,0 +1,96 @@
+//! SIGINT and SIGTERM: a flag that long loops can read, and the registry of
+//! temporary files to remove before the process exits.
+//!
+//! [`install`] starts a thread that waits for either signal. For now it sets
+//! the flag, removes every registered temporary file and exits with 128 plus
+//! the signal number (130 for SIGINT, 143 for SIGTERM). [`interrupted`] is
+//! the flag a render loop will read once an interruption is allowed to finish
+//! the samples in flight and write a partial image.
+//!
+//! The registry is one lock: code that must not be cut in the middle (the
+//! renames that put several outputs in place together) holds it through
+//! [`lock`], and a signal arriving meanwhile is handled once it is released.
+//! SIGKILL cannot be caught; it leaves the temporaries behind, named as
+//! `crate::image_io` says (`.<name>.pathtracer-tmp-<pid>-<n>`).
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicI32, Ordering};
+use std::sync::{Mutex, MutexGuard};
+
+/// The signal received, or 0.
+static SIGNAL: AtomicI32 = AtomicI32::new(0);
+
+/// Temporary files that exist (or are about to) and must not outlive the process.
+static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// The signal that interrupted the process (SIGINT is 2, SIGTERM 15), if any.
+pub fn interrupted() -> Option<i32> {
+    match SIGNAL.load(Ordering::SeqCst) {
+        0 => None,
+        signal => Some(signal),
+    }
+}
+
+/// The registry of temporary files, held: no signal is handled until it is
+/// dropped.
+pub struct Registry {
+    temporaries: MutexGuard<'static, Vec<PathBuf>>,
+}
+
+/// Holds the registry (waiting for a signal being handled, which exits).
+pub fn lock() -> Registry {
+    Registry {
+        // A panic while the list was held leaves it usable: it is only paths.
+        temporaries: TEMPORARIES.lock().unwrap_or_else(|e| e.into_inner()),
+    }
+}
+
+impl Registry {
+    /// Records `path` for removal on a signal; call it before creating the file.
+    pub fn register(&mut self, path: &Path) {
+        self.temporaries.push(path.to_path_buf());
+    }
+
+    /// Forgets `path` (removed, or renamed into place).
+    pub fn unregister(&mut self, path: &Path) {
+        if let Some(index) = self.temporaries.iter().rposition(|p| p == path) {
+            self.temporaries.swap_remove(index);
+        }
+    }
+
+    /// Removes every registered file (those that do not exist are skipped).
+    fn remove_all(&mut self) {
+        for path in self.temporaries.drain(..) {
+            let _ = std::fs::remove_file(&path);
+        }
+    }
+}
+
+/// Starts the thread that handles SIGINT and SIGTERM (once per process).
+pub fn install() -> Result<(), String> {
+    #[cfg(unix)]
+    {
+        use signal_hook::consts::{SIGINT, SIGTERM};
+        let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM])
+            .map_err(|e| format!("cannot handle SIGINT and SIGTERM: {e}"))?;
+        std::thread::Builder::new()
+            .name("interrupt".to_string())
+            .spawn(move || {
+                if let Some(signal) = signals.forever().next() {
+                    finish(signal);
+                }
+            })
+            .map_err(|e| format!("cannot start the signal thread: {e}"))?;
+    }
+    Ok(())
+}
+
+/// Sets the flag, removes the temporaries and exits with `128 + signal`.
+fn finish(signal: i32) -> ! {
+    SIGNAL.store(signal, Ordering::SeqCst);
+    let mut registry = lock();
+    registry.remove_all();
+    eprintln!("interrupted by signal {signal}: temporary files removed");
+    // The registry stays held: no new temporary can appear before the exit.
+    std::process::exit(128 + signal)
+}
