@@ -283,15 +283,7 @@ fn sphere_cut_by_a_plane_is_sampled_on_the_reachable_cap() {
             sampled += 1.0 / light.pdf / n as f64;
         }
         // ... and the samples cover the solid angle in which the light is seen.
-        let m = 400_000;
-        let seen = (0..m)
-            .filter(|_| {
-                let d = uniform_sphere([rng.next_f64(), rng.next_f64()]);
-                let hit = world.intersect(&Ray::new(reference, d, 0.0), 0.0, f64::INFINITY);
-                hit.is_some_and(|h| h.primitive == 1)
-            })
-            .count();
-        let seen = 4.0 * PI * seen as f64 / m as f64;
+        let seen = seen_solid_angle(&world, reference, 1, &mut rng);
         assert!(
             (sampled - seen).abs() < 0.05 * seen,
             "{reference:?}: sampled {sampled} vs seen {seen}"
@@ -388,15 +380,7 @@ fn a_one_sided_plane_cuts_nothing_seen_from_behind() {
         assert_eq!(hit.primitive, 1);
         sampled += 1.0 / light.pdf / n as f64;
     }
-    let m = 400_000;
-    let seen = (0..m)
-        .filter(|_| {
-            let d = uniform_sphere([rng.next_f64(), rng.next_f64()]);
-            let hit = world.intersect(&Ray::new(reference, d, 0.0), 0.0, f64::INFINITY);
-            hit.is_some_and(|h| h.primitive == 1)
-        })
-        .count();
-    let seen = 4.0 * PI * seen as f64 / m as f64;
+    let seen = seen_solid_angle(&world, reference, 1, &mut rng);
     assert!(
         (sampled - seen).abs() < 0.05 * seen,
         "sampled {sampled} vs seen {seen}"
@@ -460,4 +444,18 @@ fn a_cut_sphere_is_picked_by_the_power_of_its_cap_on_the_cameras_side() {
         distribution.pmf(1)
     );
     assert_eq!(distribution.pmf(2), 0.0);
+}
+
+/// The solid angle in which `primitive` is the first hit from `reference`,
+/// by uniform directions (400k rays).
+fn seen_solid_angle(world: &World, reference: Point3, primitive: usize, rng: &mut Rng) -> f64 {
+    let m = 400_000;
+    let seen = (0..m)
+        .filter(|_| {
+            let d = uniform_sphere([rng.next_f64(), rng.next_f64()]);
+            let hit = world.intersect(&Ray::new(reference, d, 0.0), 0.0, f64::INFINITY);
+            hit.is_some_and(|h| h.primitive == primitive)
+        })
+        .count();
+    4.0 * PI * seen as f64 / m as f64
 }
