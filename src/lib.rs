@@ -16,6 +16,7 @@ pub mod checker;
 pub mod color;
 pub mod converge;
 pub mod film;
+pub mod fixed_sum;
 pub mod geometry;
 pub mod image_io;
 pub mod integrator;
