@@ -307,3 +307,77 @@ pub fn check_parts(parts: &[Part]) -> Result<Vec<String>, String> {
     }
     Ok(missing)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn header(crop: &str, samples: &str) -> JobHeader {
+        JobHeader::from_fields(|name| {
+            Some(match name {
+                "width" => "10".to_string(),
+                "height" => "8".to_string(),
+                "crop" => crop.to_string(),
+                "samples" => samples.to_string(),
+                _ => "0".to_string(),
+            })
+        })
+        .unwrap()
+    }
+
+    fn check(parts: &[(&str, &str)]) -> Result<Vec<String>, String> {
+        let headers: Vec<JobHeader> = parts.iter().map(|(c, s)| header(c, s)).collect();
+        let names: Vec<String> = (0..parts.len()).map(|i| format!("p{i}")).collect();
+        let parts: Vec<Part> = names
+            .iter()
+            .zip(&headers)
+            .map(|(name, header)| Part { name, header })
+            .collect();
+        check_parts(&parts)
+    }
+
+    #[test]
+    fn tiles_and_ranges_that_cover_everything_leave_nothing_missing() {
+        let parts = [
+            ("0,0,10,8", "8..16"),
+            ("0,0,4,8", "0..8"),
+            ("4,0,10,3", "0..8"),
+            ("4,3,10,8", "0..2"),
+            ("4,3,10,8", "2..8"),
+        ];
+        assert_eq!(check(&parts), Ok(vec![]));
+    }
+
+    #[test]
+    fn gaps_are_listed_by_region_and_range() {
+        let missing = check(&[("0,0,10,8", "0..4"), ("0,0,5,8", "6..9")]).unwrap();
+        assert_eq!(missing, ["0,0,5,8: samples 4..6", "5,0,10,8: samples 4..9"]);
+    }
+
+    #[test]
+    fn overlaps_name_both_parts_and_the_shared_samples() {
+        let error = check(&[("2,2,3,3", "1..3"), ("0,0,10,8", "0..10")]).unwrap_err();
+        assert!(
+            error.starts_with("p1 and p0 overlap: both hold samples 1..3 of pixels 2,2,3,3"),
+            "{error}"
+        );
+        let error = check(&[("0,0,10,8", "0..10"), ("9,7,10,8", "9..12")]).unwrap_err();
+        assert!(
+            error.contains("both hold samples 9..10 of pixels 9,7,10,8"),
+            "{error}"
+        );
+    }
+
+    #[test]
+    fn job_arguments_are_parsed_or_refused() {
+        assert_eq!(parse_samples("16..40"), Ok(16..40));
+        assert!(parse_samples("4..4").is_err() && parse_samples("4").is_err());
+        assert_eq!(
+            Crop::parse("1,2,3,4").map(|c| c.to_string()),
+            Ok("1,2,3,4".into())
+        );
+        assert!(Crop::parse("1,2,3").is_err() && Crop::parse("a,b,c,d").is_err());
+        assert!(Crop::full(4, 4).check(4, 4).is_ok());
+        assert!(Crop::parse("2,0,2,4").unwrap().check(4, 4).is_err());
+    }
+}
