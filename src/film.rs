@@ -3,6 +3,7 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use crate::color::Color;
+use crate::fixed_sum::{FixedColor, FixedSquares};
 use crate::image_io::Image;
 use crate::limits::{MemoryBudget, is_usable_radiance};
 
@@ -15,18 +16,23 @@ pub const FIREFLY_FLOOR: f64 = 0.05;
 pub const FIREFLY_MIN_SAMPLES: u32 = 8;
 
 /// One pixel's running sums (the mean and a variance estimate from the first
-/// two moments of luminance are all that adaptive sampling needs).
+/// two moments of luminance are all that adaptive sampling needs), in fixed
+/// point so that sums of parts add up exactly to the sum of the whole.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct PixelSum {
-    pub sum: Color,
+    pub sum: FixedColor,
     /// Sum of squared sample luminances.
-    pub sum_of_squares: f64,
+    pub sum_of_squares: FixedSquares,
     pub samples: u32,
     /// Samples dropped because they were NaN, infinite or beyond
     /// [`MAX_RADIANCE`](crate::limits::MAX_RADIANCE).
     pub dropped: u32,
-    /// Samples above the firefly bound (kept, unless clamped).
+    /// Samples above the firefly bound (kept, unless clamped). The bound is
+    /// the running mean of the samples added so far, so a film rendered in
+    /// parts counts its fireflies against each part's own mean.
     pub fireflies: u32,
+    /// Samples with a channel beyond `fixed_sum::MAX_SAMPLE`, clamped there.
+    pub saturated: u32,
     /// Adaptive sampling stopped this pixel.
     pub converged: bool,
 }
@@ -43,7 +49,7 @@ impl PixelSum {
         }
         let mut l = sample.luminance();
         if self.samples >= FIREFLY_MIN_SAMPLES {
-            let mean = self.sum.luminance() / self.samples as f64;
+            let mean = self.sum.to_color().luminance() / self.samples as f64;
             if l > FIREFLY_FACTOR * (mean + FIREFLY_FLOOR) {
                 self.fireflies += 1;
             }
@@ -54,16 +60,26 @@ impl PixelSum {
             sample *= limit / l;
             l = limit;
         }
-        self.sum += sample;
-        self.sum_of_squares += l * l;
+        self.saturated += self.sum.add(sample) as u32;
+        self.sum_of_squares.add(l);
         self.samples += 1;
+    }
+
+    /// Adds the sums of other samples of the same pixel.
+    pub fn add_sum(&mut self, other: &PixelSum) {
+        self.sum.add_sum(&other.sum);
+        self.sum_of_squares.add_sum(&other.sum_of_squares);
+        self.samples = self.samples.saturating_add(other.samples);
+        self.dropped = self.dropped.saturating_add(other.dropped);
+        self.fireflies = self.fireflies.saturating_add(other.fireflies);
+        self.saturated = self.saturated.saturating_add(other.saturated);
     }
 
     pub fn mean(&self) -> Color {
         if self.samples == 0 {
             Color::BLACK
         } else {
-            self.sum / self.samples as f64
+            self.sum.to_color() / self.samples as f64
         }
     }
 
@@ -73,8 +89,8 @@ impl PixelSum {
             return f64::INFINITY;
         }
         let n = self.samples as f64;
-        let mean = self.sum.luminance() / n;
-        let variance = ((self.sum_of_squares / n - mean * mean) * n / (n - 1.0)).max(0.0);
+        let mean = self.sum.to_color().luminance() / n;
+        let variance = ((self.sum_of_squares.to_f64() / n - mean * mean) * n / (n - 1.0)).max(0.0);
         (variance / n).sqrt()
     }
 }
@@ -82,7 +98,7 @@ impl PixelSum {
 /// Light-tracing sums are kept in fixed point with this many fractional
 /// bits: integer sums do not depend on the order of the additions, so an
 /// image stays the same for any thread count.
-const SPLAT_FRACTION_BITS: u32 = 20;
+pub const SPLAT_FRACTION_BITS: u32 = 20;
 const SPLAT_SCALE: f64 = (1u64 << SPLAT_FRACTION_BITS) as f64;
 
 /// A splat's channel in fixed point; negative and non-finite values count
@@ -102,12 +118,12 @@ pub struct Film {
     pub width: usize,
     pub height: usize,
     pub pixels: Vec<PixelSum>,
-    /// Light tracing's sums per pixel and channel (fixed point), and the
-    /// number of light subpaths they come from.
-    splats: Vec<[u64; 3]>,
-    light_paths: u64,
+    /// Light tracing's sums per pixel and channel (fixed point, see
+    /// [`SPLAT_FRACTION_BITS`]), and the number of light subpaths they come from.
+    pub splats: Vec<[u64; 3]>,
+    pub light_paths: u64,
     /// Light tracing's splats dropped for a non-finite or too large value.
-    splats_dropped: u64,
+    pub splats_dropped: u64,
 }
 
 impl Film {
@@ -166,6 +182,33 @@ impl Film {
 
     pub fn fireflies(&self) -> u64 {
         self.pixels.iter().map(|p| p.fireflies as u64).sum()
+    }
+
+    pub fn saturated(&self) -> u64 {
+        self.pixels.iter().map(|p| p.saturated as u64).sum()
+    }
+
+    /// Adds the sums of `other`, a film of the same size (other samples, or
+    /// other pixels): integer sums, so the result does not depend on how a
+    /// render was split or in which order the parts are added.
+    pub fn add_film(&mut self, other: &Film) -> Result<(), String> {
+        if (self.width, self.height) != (other.width, other.height) {
+            return Err(format!(
+                "cannot add a {}x{} film to a {}x{} one",
+                other.width, other.height, self.width, self.height
+            ));
+        }
+        for (pixel, part) in self.pixels.iter_mut().zip(&other.pixels) {
+            pixel.add_sum(part);
+        }
+        for (pixel, part) in self.splats.iter_mut().zip(&other.splats) {
+            for (total, value) in pixel.iter_mut().zip(part) {
+                *total = total.saturating_add(*value);
+            }
+        }
+        self.light_paths = self.light_paths.saturating_add(other.light_paths);
+        self.splats_dropped = self.splats_dropped.saturating_add(other.splats_dropped);
+        Ok(())
     }
 }
 

@@ -22,8 +22,10 @@ struct Cli {
 enum Command {
     /// Parse and build scene files and print a summary of each.
     Check(commands::check::CheckArgs),
-    /// Render a scene file to an image.
+    /// Render a scene file to an image (or, with --film, one part of a render).
     Render(commands::render::RenderArgs),
+    /// Add the films of render jobs (render --film) into one image.
+    Merge(commands::merge::MergeArgs),
     /// Compare an image with a reference: RMSE, relative MSE, PSNR, SSIM, FLIP, look-alike.
     Compare(commands::compare::CompareArgs),
     /// Render every pair of a pairs file and measure how alike ours and theirs look.
@@ -44,6 +46,7 @@ fn main() -> ExitCode {
     let result = match command {
         Command::Check(args) => commands::check::run(&args),
         Command::Render(args) => commands::render::run(&args),
+        Command::Merge(args) => commands::merge::run(&args),
         Command::Compare(args) => commands::compare::run(&args),
         Command::Lookalike(args) => commands::lookalike::run(&args),
         Command::Convert(args) => commands::compare::convert(&args),

@@ -12,7 +12,9 @@ macro_rules! say {
 pub mod check;
 pub mod compare;
 pub mod converge;
+pub mod job;
 pub mod lookalike;
+pub mod merge;
 pub mod render;
 
 use std::path::{Path, PathBuf};

@@ -44,9 +44,22 @@ pub struct RenderArgs {
     stats: bool,
     #[command(flatten)]
     sampling: SamplingOptions,
+    #[command(flatten)]
+    job: super::job::JobOptions,
 }
 
 pub fn run(args: &RenderArgs) -> Result<(), String> {
+    if let Some(part) = &args.job.film {
+        if args.output.is_some() || args.target_error.is_some() || args.time_budget.is_some() {
+            return Err(
+                "--film writes a film, not an image: no -o, --target-error or --time-budget"
+                    .to_string(),
+            );
+        }
+        let sampling = &args.sampling;
+        return super::job::run(&args.scene, part, args.spp, &args.job, sampling, args.quiet);
+    }
+    args.job.check_without_film()?;
     let started = Instant::now();
     let output = args
         .output
