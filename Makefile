@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench converge lookalike crosscheck crosscheck-glossy mitsuba-converge gallery clean
+.PHONY: build render test lint bench converge lookalike crosscheck crosscheck-glossy mitsuba-converge gallery farm-test clean
 
 build:
 	$(CARGO) build --release
@@ -66,6 +66,15 @@ gallery: build
 	python3 -m venv $(VENV)
 	$(VENV)/bin/pip install -q numpy pillow
 	$(VENV)/bin/python scripts/gallery.py
+
+# A distributed render through Slurm on this machine (not part of `make
+# test`; needs root): installs Debian's slurmctld, slurmd and munge if
+# missing, starts a one-node cluster under output/farm-test/, renders SCENE
+# at SPP as an array of TASKS tasks (default 4, at WIDTH x HEIGHT, default
+# 160x120) and checks the merged image against a one-process render byte
+# for byte (scripts/farm/farm-test.sh).
+farm-test: build
+	SCENE=$(SCENE) SPP=$(SPP) scripts/farm/farm-test.sh
 
 clean:
 	$(CARGO) clean
