@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench converge lookalike crosscheck crosscheck-glossy mitsuba-converge gallery fuzz fuzz-seeds clean
+.PHONY: build render test lint bench converge lookalike crosscheck crosscheck-glossy mitsuba-converge gallery fuzz fuzz-seeds farm-test clean
 
 build:
 	$(CARGO) build --release
@@ -113,6 +113,15 @@ fuzz: fuzz-seeds
 		found=$$(ls $(FUZZ_DIR)/artifacts/$$target | wc -l); \
 		echo "$$target: $${runs:-0} executions in $$seconds s ($$(( $${runs:-0} / $$seconds )) exec/s), $$found files in fuzz/artifacts/$$target"; \
 	done
+
+# A distributed render through Slurm on this machine (not part of `make
+# test`; needs root): installs Debian's slurmctld, slurmd and munge if
+# missing, starts a one-node cluster under output/farm-test/, renders SCENE
+# at SPP as an array of TASKS tasks (default 4, at WIDTH x HEIGHT, default
+# 160x120) and checks the merged image against a one-process render byte
+# for byte (scripts/farm/farm-test.sh).
+farm-test: build
+	SCENE=$(SCENE) SPP=$(SPP) scripts/farm/farm-test.sh
 
 clean:
 	$(CARGO) clean
