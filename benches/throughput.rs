@@ -167,6 +167,7 @@ fn renders(c: &mut Criterion) {
                 max_depth: pathtracer::integrator::original::MAX_DEPTH,
                 sampler: SamplerKind::Sobol,
                 progress: false,
+                progress_every: None,
                 clamp: None,
                 light_paths: true,
                 look: Default::default(),

@@ -33,8 +33,13 @@ pub struct RenderSettings {
     pub max_depth: u32,
     /// Where sample values come from (independent random or Sobol').
     pub sampler: SamplerKind,
-    /// Print a progress line with an ETA (only on a terminal).
+    /// Report progress on standard error: a line rewritten in place on a
+    /// terminal, otherwise (batch logs) one line every
+    /// [`PROGRESS_LOG_SECONDS`].
     pub progress: bool,
+    /// Seconds between progress lines when standard error is not a
+    /// terminal (`None`: [`PROGRESS_LOG_SECONDS`]).
+    pub progress_every: Option<f64>,
     /// Scale samples down to this luminance (biased; `None`: off).
     pub clamp: Option<f64>,
     /// Whether the path integrator traces light subpaths for caustics where
@@ -124,11 +129,24 @@ pub fn render_into(
     let pool = builder
         .build()
         .map_err(|e| format!("cannot start worker threads: {e}"))?;
-    let show_progress = settings.progress && std::io::stderr().is_terminal();
+    let terminal = std::io::stderr().is_terminal();
+    let samples_per_row = (width * samples.len()) as f64;
+    let finished = std::sync::atomic::AtomicBool::new(false);
     std::thread::scope(|scope| {
-        if show_progress {
-            scope.spawn(|| report_progress(&rows_done, height, start));
-        }
+        let reporter = settings.progress.then(|| {
+            scope.spawn(|| {
+                let every = settings.progress_every.unwrap_or(PROGRESS_LOG_SECONDS);
+                report_progress(
+                    &rows_done,
+                    height,
+                    samples_per_row,
+                    start,
+                    terminal,
+                    every,
+                    &finished,
+                )
+            })
+        });
         pool.install(|| {
             film.pixels
                 .par_chunks_mut(width)
@@ -162,10 +180,11 @@ pub fn render_into(
                     rows_done.fetch_add(1, Ordering::Relaxed);
                 });
         });
+        finished.store(true, Ordering::Relaxed);
+        if let Some(reporter) = reporter {
+            reporter.thread().unpark();
+        }
     });
-    if show_progress {
-        eprintln!();
-    }
     splat_sums.add_to(film);
     Ok(RenderStats {
         seconds: start.elapsed().as_secs_f64(),
@@ -250,23 +269,56 @@ fn has_motion(root: &Object) -> bool {
     moving
 }
 
-fn report_progress(rows_done: &AtomicUsize, rows: usize, start: Instant) {
+/// Seconds between progress lines when standard error is not a terminal.
+pub const PROGRESS_LOG_SECONDS: f64 = 5.0;
+
+/// Reports the rows done until `finished`: on a terminal, one line
+/// rewritten four times a second; otherwise a line every
+/// [`PROGRESS_LOG_SECONDS`] (percent, samples/s, elapsed, remaining), so
+/// that a batch log grows by a line, not by carriage returns.
+fn report_progress(
+    rows_done: &AtomicUsize,
+    rows: usize,
+    samples_per_row: f64,
+    start: Instant,
+    terminal: bool,
+    every: f64,
+    finished: &std::sync::atomic::AtomicBool,
+) {
+    let tick = if terminal {
+        Duration::from_millis(250)
+    } else {
+        Duration::from_secs_f64(every)
+    };
+    let mut printed = false;
     loop {
+        std::thread::park_timeout(tick);
         let done = rows_done.load(Ordering::Relaxed);
+        let over = finished.load(Ordering::Relaxed);
+        if over && !(terminal && printed) {
+            return;
+        }
         let elapsed = start.elapsed().as_secs_f64();
-        let fraction = done as f64 / rows as f64;
-        let eta = if done > 0 {
+        let fraction = done as f64 / rows.max(1) as f64;
+        let left = if done > 0 {
             format!("{:.0} s left", elapsed / fraction - elapsed)
         } else {
             "estimating".to_string()
         };
-        eprint!(
-            "\rrendering {:5.1}%  {elapsed:.0} s  {eta}    ",
+        let rate = done as f64 * samples_per_row / elapsed.max(1e-9) / 1e6;
+        let line = format!(
+            "rendering {:5.1}%  {rate:.2} M samples/s  {elapsed:.0} s elapsed  {left}",
             fraction * 100.0
         );
-        if done >= rows {
-            return;
+        if terminal {
+            eprint!("\r{line}    ");
+            printed = true;
+            if over {
+                eprintln!();
+                return;
+            }
+        } else {
+            eprintln!("{line}");
         }
-        std::thread::sleep(Duration::from_millis(250));
     }
 }

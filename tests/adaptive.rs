@@ -70,6 +70,7 @@ fn settings(spp: u32, threads: usize) -> RenderSettings {
         max_depth: 5,
         sampler: SamplerKind::Sobol,
         progress: false,
+        progress_every: None,
         clamp: None,
         light_paths: true,
         look: Default::default(),

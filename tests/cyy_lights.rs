@@ -36,6 +36,7 @@ fn settings(size: u32, spp: u32, integrator: Integrator) -> RenderSettings {
         max_depth: pathtracer::integrator::original::MAX_DEPTH,
         sampler: SamplerKind::Sobol,
         progress: false,
+        progress_every: None,
         clamp: None,
         light_paths: true,
         look: Default::default(),

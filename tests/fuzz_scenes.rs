@@ -154,6 +154,7 @@ fn render_tiny(mut scene: Scene) -> Result<(), String> {
             max_depth: look.max_depth,
             sampler: SamplerKind::Sobol,
             progress: false,
+            progress_every: None,
             clamp: None,
             light_paths: true,
             look,

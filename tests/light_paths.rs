@@ -32,6 +32,7 @@ fn settings(integrator: Integrator, light_paths: bool, spp: u32, seed: u64) -> R
         max_depth: MAX_DEPTH,
         sampler: SamplerKind::Independent,
         progress: false,
+        progress_every: None,
         clamp: None,
         light_paths,
         look: Default::default(),

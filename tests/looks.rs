@@ -24,6 +24,7 @@ fn settings(look: Look, integrator: Integrator, spp: u32) -> RenderSettings {
         max_depth: look.max_depth,
         sampler: SamplerKind::Independent,
         progress: false,
+        progress_every: None,
         clamp: None,
         light_paths: true,
         look,

@@ -145,6 +145,7 @@ fn settings(width: u32, height: u32, spp: u32) -> RenderSettings {
         max_depth: pathtracer::integrator::original::MAX_DEPTH,
         sampler: SamplerKind::Sobol,
         progress: false,
+        progress_every: None,
         clamp: None,
         light_paths: true,
         look: Default::default(),

@@ -129,6 +129,7 @@ fn runs(scene: &Scene, integrator: Integrator) -> Vec<Vec<f64>> {
         max_depth: MAX_DEPTH,
         sampler: SamplerKind::Independent,
         progress: false,
+        progress_every: None,
         clamp: None,
         light_paths: true,
         look: Default::default(),

@@ -48,6 +48,7 @@ fn every_shared_scene_renders_without_nan_or_inf_samples() {
                 max_depth: pathtracer::integrator::original::MAX_DEPTH,
                 sampler: SamplerKind::Sobol,
                 progress: false,
+                progress_every: None,
                 clamp: None,
                 light_paths: true,
                 look: Default::default(),

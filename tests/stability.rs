@@ -156,6 +156,7 @@ fn render_scene(scene: &Scene) -> (Image, u64) {
         max_depth: 5,
         sampler: SamplerKind::Sobol,
         progress: false,
+        progress_every: None,
         clamp: None,
         light_paths: true,
         look: Default::default(),

@@ -56,6 +56,7 @@ pub fn render_every_integrator(scene: &Scene, world: &World, look: Look) {
             max_depth: look.max_depth,
             sampler: SamplerKind::Sobol,
             progress: false,
+            progress_every: None,
             clamp: None,
             light_paths: true,
             look,

@@ -119,6 +119,10 @@ pub struct SamplingOptions {
     /// Worker threads (default: one per core).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     pub threads: Option<u32>,
+    /// Seconds between progress lines when standard error is not a
+    /// terminal, as in a batch log (default 5).
+    #[arg(long, value_parser = parse_progress_every)]
+    pub progress_every: Option<f64>,
     /// Image width, overriding the scene's camera.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
     pub width: Option<u32>,
@@ -203,10 +207,20 @@ impl SamplingOptions {
             max_depth: self.max_depth.unwrap_or(look.max_depth),
             sampler: self.sampler,
             progress,
+            progress_every: self.progress_every,
             clamp: self.clamp,
             light_paths: !self.no_light_paths,
             look,
         }
+    }
+}
+
+fn parse_progress_every(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(seconds) if seconds.is_finite() && (0.1..=86_400.0).contains(&seconds) => Ok(seconds),
+        _ => Err(format!(
+            "'{text}': expected seconds between progress lines, from 0.1 to 86400"
+        )),
     }
 }
 
