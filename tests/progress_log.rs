@@ -2,14 +2,12 @@
 //! pipe), a render reports one whole line at a time, with percent, samples
 //! per second, elapsed and remaining time, and no carriage returns.
 
+use std::path::Path;
 use std::process::Command;
 
-#[test]
-fn progress_goes_to_a_batch_log_as_whole_lines() {
-    let dir = std::env::temp_dir().join(format!("pathtracer-progress-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let output = dir.join("smallpt.pfm");
-    // About a second of rendering on 2 cores, reported every 0.1 s.
+/// Renders smallpt at 80x60 and 256 spp (about a second on 2 cores) into
+/// `output`, reporting progress every 0.1 s; its standard error.
+fn render_log(output: &Path, extra: &[&str]) -> String {
     let out = Command::new(env!("CARGO_BIN_EXE_pathtracer"))
         .args([
             "render",
@@ -19,18 +17,27 @@ fn progress_goes_to_a_batch_log_as_whole_lines() {
             "--height",
             "60",
         ])
-        .args(["--spp", "256", "--progress-every", "0.1", "-o"])
-        .arg(&output)
+        .args(["--spp", "256", "--progress-every", "0.1"])
+        .args(extra)
+        .arg("-o")
+        .arg(output)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .output()
         .expect("the binary runs");
+    let log = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(out.status.success(), "{log}");
+    log
+}
+
+#[test]
+fn progress_goes_to_a_batch_log_as_whole_lines() {
+    let dir = std::env::temp_dir().join(format!("pathtracer-progress-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let log = render_log(&dir.join("smallpt.pfm"), &[]);
+    // --quiet still prints no progress.
+    let quiet_log = render_log(&dir.join("quiet.pfm"), &["--quiet"]);
     let _ = std::fs::remove_dir_all(&dir);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let log = String::from_utf8_lossy(&out.stderr);
+    assert!(!quiet_log.contains("rendering"), "{quiet_log}");
     assert!(
         !log.contains('\r'),
         "carriage returns in a batch log: {log:?}"
@@ -49,41 +56,12 @@ fn progress_goes_to_a_batch_log_as_whole_lines() {
     let percents: Vec<f64> = lines
         .iter()
         .map(|l| {
-            l["rendering".len()..]
-                .trim_start()
-                .split('%')
-                .next()
-                .unwrap()
-                .trim()
-                .parse()
-                .unwrap()
+            let after = l["rendering".len()..].trim_start();
+            after.split('%').next().unwrap().trim().parse().unwrap()
         })
         .collect();
     assert!(
         percents.windows(2).all(|w| w[0] <= w[1]),
         "progress went backwards: {percents:?}"
     );
-    // --quiet still prints no progress.
-    let quiet = Command::new(env!("CARGO_BIN_EXE_pathtracer"))
-        .args([
-            "render",
-            "testcases/smallpt.txt",
-            "--width",
-            "80",
-            "--height",
-            "60",
-        ])
-        .args(["--spp", "256", "--progress-every", "0.1", "--quiet", "-o"])
-        .arg(dir.join("quiet.pfm"))
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the binary runs");
-    let _ = std::fs::remove_dir_all(&dir);
-    assert!(
-        quiet.status.success(),
-        "{}",
-        String::from_utf8_lossy(&quiet.stderr)
-    );
-    let quiet_log = String::from_utf8_lossy(&quiet.stderr);
-    assert!(!quiet_log.contains("rendering"), "{quiet_log}");
 }
