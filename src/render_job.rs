@@ -117,7 +117,7 @@ impl JobHeader {
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         scene: &str,
-        scene_text: &[u8],
+        scene_hash: u64,
         triangles: u64,
         settings: &RenderSettings,
         missing_assets: &str,
@@ -126,7 +126,7 @@ impl JobHeader {
     ) -> JobHeader {
         JobHeader {
             scene: scene.to_string(),
-            scene_hash: format!("{:016x}", fnv1a(scene_text)),
+            scene_hash: format!("{scene_hash:016x}"),
             triangles,
             seed: settings.seed,
             look: settings.look.name.to_string(),
@@ -204,13 +204,6 @@ impl JobHeader {
             samples: parse_samples(&text("samples")?)?,
         })
     }
-}
-
-/// The 64-bit FNV-1a hash: small, stable across platforms and versions.
-pub fn fnv1a(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |hash, &byte| {
-        (hash ^ byte as u64).wrapping_mul(0x0000_0100_0000_01b3)
-    })
 }
 
 /// A part to merge: its file name and header.

@@ -58,8 +58,6 @@ pub fn run(
     {
         return Err(format!("{}: a film is an .exr file", part.display()));
     }
-    let scene_text = std::fs::read(scene_path)
-        .map_err(|e| format!("{}: cannot read: {e}", scene_path.display()))?;
     let mut scene = load_for_render(scene_path, &sampling.scene)?;
     let settings = sampling.settings(&scene, samples.end, !quiet);
     let crop = job
@@ -73,7 +71,7 @@ pub fn run(
     let stats = render_into(&scene, &world, &settings, &mut film, samples.clone())?;
     let header = JobHeader::new(
         &scene_path.display().to_string(),
-        &scene_text,
+        scene.load.source_hash,
         world.triangle_count() as u64,
         &settings,
         sampling.scene.missing_assets.name(),

@@ -75,7 +75,15 @@ pub fn load_scene(path: &Path, options: &LoadOptions) -> Result<Scene, SceneErro
     let parse_seconds = started.elapsed().as_secs_f64();
     let mut scene = build(&document, path, options)?;
     scene.load.parse_seconds = parse_seconds;
+    scene.load.source_hash = fnv1a(&bytes);
     Ok(scene)
+}
+
+/// The 64-bit FNV-1a hash: small, stable across platforms and versions.
+pub fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |hash, &byte| {
+        (hash ^ byte as u64).wrapping_mul(0x0000_0100_0000_01b3)
+    })
 }
 
 #[cfg(test)]

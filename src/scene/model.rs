@@ -71,6 +71,9 @@ impl Scene {
 /// Time spent in each phase of loading a scene, and what was loaded.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct LoadStats {
+    /// FNV-1a ([`fnv1a`](crate::scene::fnv1a)) of the scene file's bytes as
+    /// read: what says that parts of a render are of the same scene.
+    pub source_hash: u64,
     pub parse_seconds: f64,
     pub mesh_seconds: f64,
     pub texture_seconds: f64,
