@@ -27,7 +27,6 @@ use exr::prelude::{
 
 use crate::film::{Film, PixelSum};
 use crate::fixed_sum::{FixedColor, FixedSquares};
-use crate::image_io::write_atomically;
 use crate::render_job::JobHeader;
 
 /// Written in every film file; a reader refuses other versions.
@@ -35,8 +34,9 @@ const FORMAT_VERSION: &str = "1";
 const ATTRIBUTE_PREFIX: &str = "pathtracer.";
 const CHANNEL_NAMES: [&str; 3] = ["R", "G", "B"];
 
-/// Writes `film` and `header` to `path` (an `.exr` file), atomically.
-pub fn write_film(path: &Path, film: &Film, header: &JobHeader) -> Result<(), String> {
+/// The bytes of the `.exr` file of `film` and `header` (`path` names it in
+/// messages).
+pub fn encode_film(path: &Path, film: &Film, header: &JobHeader) -> Result<Vec<u8>, String> {
     let mut channels: Vec<AnyChannel<FlatSamples>> = Vec::new();
     let mut words = |name: String, count: usize, word: &dyn Fn(usize, usize) -> u32| {
         for index in 0..count {
@@ -97,10 +97,10 @@ pub fn write_film(path: &Path, film: &Film, header: &JobHeader) -> Result<(), St
         .write()
         .to_buffered(&mut bytes)
         .map_err(|e| format!("{}: cannot encode the film: {e}", path.display()))?;
-    write_atomically(path, &bytes.into_inner())
+    Ok(bytes.into_inner())
 }
 
-/// Reads a film file written by [`write_film`].
+/// Reads a film file written from [`encode_film`].
 pub fn read_film(path: &Path) -> Result<(Film, JobHeader), String> {
     let shown = path.display();
     let image = read()
@@ -263,7 +263,8 @@ mod tests {
         splats.add_to(&mut film);
         let dir = std::env::temp_dir().join(format!("film-file-{}", std::process::id()));
         let path = dir.join("part.exr");
-        write_film(&path, &film, &header(3, 2)).unwrap();
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(&path, encode_film(&path, &film, &header(3, 2)).unwrap()).unwrap();
         let (read_back, read_header) = read_film(&path).unwrap();
         let _ = std::fs::remove_dir_all(&dir);
         assert_eq!(read_header, header(3, 2));

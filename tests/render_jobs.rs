@@ -228,3 +228,19 @@ fn job_options_without_a_film_are_refused() {
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("need --film"));
 }
+
+#[test]
+fn a_merged_film_never_replaces_one_of_its_parts() {
+    let dir = temp_dir("inputs");
+    let first = path(&dir, "a.exr");
+    let second = path(&dir, "b.exr");
+    render(&["--samples", "0..2", "--film", &first]);
+    render(&["--samples", "2..4", "--film", &second]);
+    let before = std::fs::read(&first).expect("part a");
+    let out = pathtracer(&["merge", &first, &second, "--film", &first]);
+    let message = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{message}");
+    assert!(message.contains("a part to merge"), "{message}");
+    assert_eq!(std::fs::read(&first).expect("part a"), before);
+    let _ = std::fs::remove_dir_all(&dir);
+}

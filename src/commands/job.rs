@@ -7,11 +7,12 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 
 use pathtracer::film::Film;
-use pathtracer::film_file::write_film;
-use pathtracer::image_io::check_writable;
+use pathtracer::film_file::encode_film;
+use pathtracer::image_io::{PendingFile, check_writable, refuse_inputs};
 use pathtracer::render::render_into;
 use pathtracer::render_job::{Crop, JobHeader, parse_samples};
 
+use super::render::scene_inputs;
 use super::{SamplingOptions, load_for_render, prepare};
 
 /// The options that make `render` a render job.
@@ -58,7 +59,12 @@ pub fn run(
     {
         return Err(format!("{}: a film is an .exr file", part.display()));
     }
+    // As for an image: the film's temporary exists before the scene is
+    // read, and a film that would replace one of the render's inputs is
+    // refused.
+    let mut part_file = PendingFile::reserve(part)?;
     let mut scene = load_for_render(scene_path, &sampling.scene)?;
+    refuse_inputs(&[&part_file], &scene_inputs(scene_path, &scene))?;
     let settings = sampling.settings(&scene, samples.end, !quiet);
     let crop = job
         .crop
@@ -78,7 +84,8 @@ pub fn run(
         crop,
         samples.clone(),
     );
-    write_film(part, &film, &header)?;
+    part_file.write(&encode_film(part, &film, &header)?)?;
+    part_file.commit()?;
     say!(
         "{}: film of samples {}..{} of pixels {crop} ({}x{} image), {} samples, {} light subpaths, render {:.2} s, {} NaN/Inf samples dropped, {} fireflies, {} saturated",
         part.display(),

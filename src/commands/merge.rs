@@ -6,8 +6,10 @@ use std::path::PathBuf;
 use clap::Args;
 
 use pathtracer::film::Film;
-use pathtracer::film_file::{read_film, write_film};
-use pathtracer::image_io::{check_writable, write_encoded};
+use pathtracer::film_file::{encode_film, read_film};
+use pathtracer::image_io::{
+    PendingFile, check_writable, commit_together, encode_image, refuse_inputs,
+};
 use pathtracer::render_job::{Crop, JobHeader, Part, check_parts};
 
 use super::EncodingOptions;
@@ -41,6 +43,20 @@ pub fn run(args: &MergeArgs) -> Result<(), String> {
     }
     let encoding = args.encoding.encoding();
     encoding.check()?;
+    // Outputs are reserved before the parts are read, and none may be a part.
+    let mut image_file = args
+        .output
+        .as_deref()
+        .map(PendingFile::reserve)
+        .transpose()?;
+    let mut film_file = args.film.as_deref().map(PendingFile::reserve).transpose()?;
+    let outputs: Vec<&PendingFile> = image_file.iter().chain(&film_file).collect();
+    let inputs: Vec<(&str, &std::path::Path)> = args
+        .parts
+        .iter()
+        .map(|part| ("a part to merge", part.as_path()))
+        .collect();
+    refuse_inputs(&outputs, &inputs)?;
     let names: Vec<String> = args.parts.iter().map(|p| p.display().to_string()).collect();
     // One film in memory besides the total: parts are added as they are read.
     let mut headers: Vec<JobHeader> = Vec::new();
@@ -86,7 +102,7 @@ pub fn run(args: &MergeArgs) -> Result<(), String> {
         eprintln!("warning: partial merge, missing: {}", listed.join("; "));
     }
     let first = &headers[0];
-    if let Some(path) = &args.film {
+    if let (Some(path), Some(file)) = (&args.film, &mut film_file) {
         let mut header = first.clone();
         header.crop = Crop::full(first.width, first.height);
         header.samples = 0..parts
@@ -94,11 +110,12 @@ pub fn run(args: &MergeArgs) -> Result<(), String> {
             .map(|p| p.header.samples.end)
             .max()
             .unwrap_or(0);
-        write_film(path, &total, &header)?;
+        file.write(&encode_film(path, &total, &header)?)?;
     }
-    if let Some(path) = &args.output {
-        write_encoded(path, &total.to_image(), &encoding)?;
+    if let (Some(path), Some(file)) = (&args.output, &mut image_file) {
+        file.write(&encode_image(path, &total.to_image(), &encoding)?)?;
     }
+    commit_together(film_file.into_iter().chain(image_file).collect())?;
     let written: Vec<String> = args
         .output
         .iter()
