@@ -8,9 +8,7 @@
 use std::time::Instant;
 
 use crate::film::Film;
-use crate::render::{RenderSettings, RenderStats, render_into};
-use crate::scene::model::Scene;
-use crate::world::World;
+use crate::render::{Progress, RenderStats, Renderer, Samples, Stop};
 
 /// When to stop sampling. `RenderSettings::spp` is the most any pixel gets.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -54,22 +52,33 @@ fn mark_converged(film: &mut Film, target: f64) {
 /// Samples every pixel takes before its error is trusted.
 pub const MIN_SAMPLES: u32 = 16;
 
-/// Renders into `film` following `rule`; returns the totals of all passes.
+/// The progress of an adaptive render of `film` at most `max_spp` per
+/// pixel, for its [`Renderer`]: the most it can take, within the budget.
+pub fn progress_for(film: &Film, max_spp: u32, rule: StoppingRule) -> Progress {
+    let pixels = film.pixels.iter().filter(|p| !p.converged).count() as u64;
+    Progress::new(pixels * max_spp as u64, rule.time_budget)
+}
+
+/// Renders into `film` following `rule`, up to the renderer's spp per
+/// pixel; returns the totals of all passes. SIGINT or SIGTERM stops it
+/// between two samples (then `stopped` says so).
 pub fn render_adaptive(
-    scene: &Scene,
-    world: &World,
-    settings: &RenderSettings,
+    renderer: &Renderer,
     rule: StoppingRule,
     film: &mut Film,
 ) -> Result<RenderStats, String> {
     let started = Instant::now();
-    let max_spp = settings.spp.max(1);
+    let max_spp = renderer.settings().spp.max(1);
     let mut total = RenderStats::default();
     let mut done = 0u32;
     let mut pass = MIN_SAMPLES.min(max_spp);
     let mut seconds_per_pixel_sample: Option<f64> = None;
     while done < max_spp {
         let active = film.pixels.iter().filter(|p| !p.converged).count();
+        // One overall estimate: what the pixels still active can take.
+        renderer
+            .progress()
+            .plan_remaining(active as u64 * (max_spp - done) as u64);
         if active == 0 {
             break;
         }
@@ -82,11 +91,13 @@ pub fn render_adaptive(
             }
             pass = pass.min(affordable as u32);
         }
-        let stats = render_into(scene, world, settings, film, done..done + pass)?;
+        let samples = Samples::Range(done..done + pass);
+        let stats = renderer.render(film, &samples, Stop::Interrupted { deadline: None })?;
         seconds_per_pixel_sample = Some(stats.seconds / (active as f64 * pass as f64));
-        total.samples += stats.samples;
-        total.dropped += stats.dropped;
-        total.fireflies += stats.fireflies;
+        total.add(&stats);
+        if stats.stopped.is_some() {
+            break;
+        }
         done += pass;
         if let Some(target) = rule.target_error {
             mark_converged(film, target);

@@ -7,7 +7,9 @@ use crate::film::Film;
 use crate::image_io::Image;
 use crate::limits::MemoryBudget;
 use crate::metrics::compare;
-use crate::render::{RenderSettings, render_into};
+use std::time::Instant;
+
+use crate::render::{Progress, RenderSettings, Renderer, Samples, Stop};
 use crate::scene::model::Scene;
 use crate::world::World;
 
@@ -63,12 +65,23 @@ pub fn converge_within(
         budget,
     )?;
     let mut points = Vec::new();
-    let mut seconds = 0.0;
+    // One renderer for every stage; the time to build it (the emitter
+    // table, the worker threads) counts in the first point.
+    let built = Instant::now();
+    let pixels = (film.width * film.height) as u64;
+    let renderer = Renderer::new(
+        scene,
+        world,
+        settings,
+        Progress::new(pixels * max_spp as u64, None),
+    )?;
+    let mut seconds = built.elapsed().as_secs_f64();
     let mut done = 0;
     let mut next = 1;
     while done < max_spp {
         let target = next.min(max_spp);
-        seconds += render_into(scene, world, settings, &mut film, done..target)?.seconds;
+        let samples = Samples::Range(done..target);
+        seconds += renderer.render(&mut film, &samples, Stop::Never)?.seconds;
         done = target;
         let comparison = compare(&film.to_image(), reference)?;
         let point = ConvergencePoint {

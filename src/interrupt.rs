@@ -1,11 +1,13 @@
 //! SIGINT and SIGTERM: a flag that long loops can read, and the registry of
 //! temporary files to remove before the process exits.
 //!
-//! [`install`] starts a thread that waits for either signal. For now it sets
-//! the flag, removes every registered temporary file and exits with 128 plus
-//! the signal number (130 for SIGINT, 143 for SIGTERM). [`interrupted`] is
-//! the flag a render loop will read once an interruption is allowed to finish
-//! the samples in flight and write a partial image.
+//! [`install`] starts a thread that waits for either signal. By default it
+//! sets the flag, removes every registered temporary file and exits with 128
+//! plus the signal number (130 for SIGINT, 143 for SIGTERM). While a
+//! [`Graceful`] guard is held (a render that can stop between samples and
+//! write what it has), the first signal only sets the flag that
+//! [`interrupted`] reads; the command finishes its outputs and `main` exits
+//! with 128 plus the signal. A second signal exits at once, as by default.
 //!
 //! The registry is one lock: code that must not be cut in the middle (the
 //! renames that put several outputs in place together) holds it through
@@ -14,11 +16,14 @@
 //! `crate::image_io` says (`.<name>.pathtracer-tmp-<pid>-<n>`).
 
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicI32, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
 use std::sync::{Mutex, MutexGuard};
 
 /// The signal received, or 0.
 static SIGNAL: AtomicI32 = AtomicI32::new(0);
+
+/// Whether the first signal only sets [`SIGNAL`] (see [`Graceful`]).
+static GRACEFUL: AtomicBool = AtomicBool::new(false);
 
 /// Temporary files that exist (or are about to) and must not outlive the process.
 static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
@@ -28,6 +33,23 @@ pub fn interrupted() -> Option<i32> {
     match SIGNAL.load(Ordering::SeqCst) {
         0 => None,
         signal => Some(signal),
+    }
+}
+
+/// While held, the first SIGINT or SIGTERM asks the process to finish (the
+/// samples in flight, the partial outputs) instead of ending it.
+pub struct Graceful(());
+
+impl Graceful {
+    pub fn start() -> Graceful {
+        GRACEFUL.store(true, Ordering::SeqCst);
+        Graceful(())
+    }
+}
+
+impl Drop for Graceful {
+    fn drop(&mut self) {
+        GRACEFUL.store(false, Ordering::SeqCst);
     }
 }
 
@@ -76,8 +98,16 @@ pub fn install() -> Result<(), String> {
         std::thread::Builder::new()
             .name("interrupt".to_string())
             .spawn(move || {
-                if let Some(signal) = signals.forever().next() {
-                    finish(signal);
+                for signal in signals.forever() {
+                    let first = SIGNAL.load(Ordering::SeqCst) == 0;
+                    if first && GRACEFUL.load(Ordering::SeqCst) {
+                        SIGNAL.store(signal, Ordering::SeqCst);
+                        eprintln!(
+                            "\ninterrupted by signal {signal}: finishing the samples in flight and writing what is done (again to stop at once)"
+                        );
+                    } else {
+                        finish(signal);
+                    }
                 }
             })
             .map_err(|e| format!("cannot start the signal thread: {e}"))?;

@@ -53,11 +53,18 @@ fn main() -> ExitCode {
         Command::Converge(args) => commands::converge::run(&args),
         Command::Plot(args) => commands::converge::plot(&args),
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
+    let failed = match result {
+        Ok(()) => false,
         Err(message) => {
             eprintln!("error: {message}");
-            ExitCode::FAILURE
+            true
         }
+    };
+    // A command that finished gracefully after SIGINT or SIGTERM (a render
+    // that wrote what it had) ends as an interrupted process does.
+    match pathtracer::interrupt::interrupted() {
+        Some(signal) => ExitCode::from((128 + signal).clamp(0, 255) as u8),
+        None if failed => ExitCode::FAILURE,
+        None => ExitCode::SUCCESS,
     }
 }

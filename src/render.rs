@@ -3,17 +3,19 @@
 
 use std::io::IsTerminal;
 use std::ops::Range;
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::time::{Duration, Instant};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
 
 use rayon::prelude::*;
 
 use crate::camera::Camera;
-use crate::film::{Film, SplatSums};
+use crate::film::{Film, PixelSum, SplatSums};
 use crate::image_io::Image;
 use crate::integrator::{CameraSample, Integrator, SceneView, Splats};
+use crate::interrupt;
 use crate::limits::MemoryBudget;
 use crate::look::{Look, PixelSampling};
+pub use crate::progress::{PROGRESS_LOG_SECONDS, Progress};
 use crate::sampler::{Sampler, SamplerKind};
 use crate::scene::model::{Object, Scene};
 use crate::subpixel::film_position;
@@ -59,11 +61,23 @@ pub struct RenderStats {
     pub dropped: u64,
     /// Samples above the firefly bound (see `film::FIREFLY_FACTOR`).
     pub fireflies: u64,
+    /// Why the render stopped before all its samples, if it did.
+    pub stopped: Option<Stopped>,
 }
 
 impl RenderStats {
     pub fn samples_per_second(&self) -> f64 {
         self.samples as f64 / self.seconds.max(1e-9)
+    }
+
+    /// Adds the figures of a later call of the same render (its seconds,
+    /// samples and why it stopped).
+    pub fn add(&mut self, later: &RenderStats) {
+        self.seconds += later.seconds;
+        self.samples += later.samples;
+        self.dropped += later.dropped;
+        self.fireflies += later.fireflies;
+        self.stopped = later.stopped;
     }
 }
 
@@ -95,9 +109,9 @@ pub fn render_within(
 }
 
 /// Adds the pixel samples with indices in `samples` to the pixels of `film`
-/// that have not converged. Sample `i` of a
-/// pixel is the same whichever call renders it, so rendering 0..4 and then
-/// 4..8 gives the image of rendering 0..8.
+/// that have not converged, with a [`Renderer`] made for this one call.
+/// Sample `i` of a pixel is the same whichever call renders it, so
+/// rendering 0..4 and then 4..8 gives the image of rendering 0..8.
 pub fn render_into(
     scene: &Scene,
     world: &World,
@@ -105,93 +119,267 @@ pub fn render_into(
     film: &mut Film,
     samples: Range<u32>,
 ) -> Result<RenderStats, String> {
-    let width = film.width;
-    let height = film.height;
-    let camera = Camera::new(
-        &settings.look.camera(&scene.camera),
-        width as u32,
-        height as u32,
-    );
-    let mut view = SceneView::with_look(scene, world, settings.look);
-    view.max_depth = settings.max_depth;
-    view.camera = Some(camera.clone());
-    view.light_paths &= settings.light_paths;
-    // Light tracing's sums, only where light subpaths run.
-    let splat_sums = SplatSums::new(if view.light_paths { width * height } else { 0 });
-    let plan = SamplingPlan::for_scene(scene);
-    let before = (film.samples(), film.dropped(), film.fireflies());
-    let rows_done = AtomicUsize::new(0);
-    let start = Instant::now();
-    let mut builder = rayon::ThreadPoolBuilder::new();
-    if let Some(threads) = settings.threads {
-        builder = builder.num_threads(threads.max(1));
-    }
-    let pool = builder
-        .build()
-        .map_err(|e| format!("cannot start worker threads: {e}"))?;
-    let terminal = std::io::stderr().is_terminal();
-    let samples_per_row = (width * samples.len()) as f64;
-    let finished = std::sync::atomic::AtomicBool::new(false);
-    std::thread::scope(|scope| {
-        let reporter = settings.progress.then(|| {
-            scope.spawn(|| {
-                let every = settings.progress_every.unwrap_or(PROGRESS_LOG_SECONDS);
-                report_progress(
-                    &rows_done,
-                    height,
-                    samples_per_row,
-                    start,
-                    terminal,
-                    every,
-                    &finished,
-                )
-            })
-        });
-        pool.install(|| {
-            film.pixels
-                .par_chunks_mut(width)
-                .enumerate()
-                .for_each(|(row, pixels)| {
-                    let y = height - 1 - row;
-                    let mut light_paths = 0u64;
-                    for (x, pixel) in pixels.iter_mut().enumerate() {
-                        if pixel.converged {
-                            continue;
-                        }
-                        let pixel_index = (row * width + x) as u64;
-                        for sample in samples.clone() {
-                            let context = PixelSample {
-                                x,
-                                y,
-                                pixel_index,
-                                sample,
-                            };
-                            let mut splats = Splats::default();
-                            let value =
-                                trace_sample(&view, &camera, plan, settings, context, &mut splats);
-                            pixel.add(value, settings.clamp);
-                            for &(sx, sy, splat) in splats.iter() {
-                                splat_sums.add((height - 1 - sy) * width + sx, splat);
-                            }
-                            light_paths += splats.light_paths as u64;
-                        }
-                    }
-                    splat_sums.add_light_paths(light_paths);
-                    rows_done.fetch_add(1, Ordering::Relaxed);
-                });
-        });
-        finished.store(true, Ordering::Relaxed);
-        if let Some(reporter) = reporter {
-            reporter.thread().unpark();
+    let samples = Samples::Range(samples);
+    let progress = Progress::new(samples.count(film), None);
+    let renderer = Renderer::new(scene, world, settings, progress)?;
+    renderer.render(film, &samples, Stop::Never)
+}
+
+/// Which samples of each pixel a call adds.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Samples {
+    /// The same indices for every pixel that has not converged.
+    Range(Range<u32>),
+    /// Each pixel from the first index it has not taken yet (`first` plus
+    /// its kept and dropped samples: every sample counts in exactly one)
+    /// up to `end`: what continues a render that stopped part way, in the
+    /// same process or from a checkpoint.
+    Continue { first: u32, end: u32 },
+}
+
+impl Samples {
+    /// The indices `pixel` takes.
+    pub fn of(&self, pixel: &PixelSum) -> Range<u32> {
+        match self {
+            Samples::Range(range) => range.clone(),
+            Samples::Continue { first, end } => {
+                let taken = pixel.samples.saturating_add(pixel.dropped);
+                first.saturating_add(taken).min(*end)..*end
+            }
         }
-    });
-    splat_sums.add_to(film);
-    Ok(RenderStats {
-        seconds: start.elapsed().as_secs_f64(),
-        samples: film.samples() - before.0,
-        dropped: film.dropped() - before.1,
-        fireflies: film.fireflies() - before.2,
-    })
+    }
+
+    /// The pixel samples a call will trace into `film`.
+    pub fn count(&self, film: &Film) -> u64 {
+        film.pixels
+            .iter()
+            .filter(|p| !p.converged)
+            .map(|p| self.of(p).len() as u64)
+            .sum()
+    }
+}
+
+/// When a call may stop before all its samples are traced. Either way the
+/// film holds whole samples only, and [`Samples::Continue`] takes up from
+/// where each pixel stopped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stop {
+    Never,
+    /// On SIGINT or SIGTERM ([`interrupt::interrupted`]), between two
+    /// samples; and at the deadline, if there is one, between two pixels.
+    Interrupted {
+        deadline: Option<Instant>,
+    },
+}
+
+/// Why a call stopped early.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stopped {
+    /// By this signal (2: SIGINT, 15: SIGTERM).
+    Signal(i32),
+    Deadline,
+}
+
+/// What a render needs besides the film, built once and reused by every
+/// call of one render (adaptive passes, converge stages, the slices
+/// between checkpoints): the camera, the scene as integrators see it (the
+/// emitter table), the sampling plan, the worker threads and the progress.
+pub struct Renderer<'a> {
+    settings: &'a RenderSettings,
+    view: SceneView<'a>,
+    camera: Camera,
+    plan: SamplingPlan,
+    pool: rayon::ThreadPool,
+    progress: Progress,
+}
+
+impl<'a> Renderer<'a> {
+    /// A renderer of films of `settings`' size; `progress` counts the work
+    /// of all its calls.
+    pub fn new(
+        scene: &'a Scene,
+        world: &'a World,
+        settings: &'a RenderSettings,
+        progress: Progress,
+    ) -> Result<Renderer<'a>, String> {
+        let camera = Camera::new(
+            &settings.look.camera(&scene.camera),
+            settings.width.max(1),
+            settings.height.max(1),
+        );
+        let mut view = SceneView::with_look(scene, world, settings.look);
+        view.max_depth = settings.max_depth;
+        view.camera = Some(camera.clone());
+        view.light_paths &= settings.light_paths;
+        let mut builder = rayon::ThreadPoolBuilder::new();
+        if let Some(threads) = settings.threads {
+            builder = builder.num_threads(threads.max(1));
+        }
+        let pool = builder
+            .build()
+            .map_err(|e| format!("cannot start worker threads: {e}"))?;
+        Ok(Renderer {
+            settings,
+            view,
+            camera,
+            plan: SamplingPlan::for_scene(scene),
+            pool,
+            progress,
+        })
+    }
+
+    /// The work counted over every call.
+    pub fn progress(&self) -> &Progress {
+        &self.progress
+    }
+
+    pub fn settings(&self) -> &RenderSettings {
+        self.settings
+    }
+
+    /// Adds `samples` to the pixels of `film` that have not converged,
+    /// unless `stop` says to stop first.
+    pub fn render(
+        &self,
+        film: &mut Film,
+        samples: &Samples,
+        stop: Stop,
+    ) -> Result<RenderStats, String> {
+        let settings = self.settings;
+        let (width, height) = (film.width, film.height);
+        let expected = (settings.width.max(1), settings.height.max(1));
+        if (width, height) != (expected.0 as usize, expected.1 as usize) {
+            return Err(format!(
+                "a {width}x{height} film for a {}x{} render",
+                expected.0, expected.1
+            ));
+        }
+        // Light tracing's sums, only where light subpaths run.
+        let splat_sums = SplatSums::new(if self.view.light_paths {
+            width * height
+        } else {
+            0
+        });
+        let before = (film.samples(), film.dropped(), film.fireflies());
+        let start = Instant::now();
+        let stopping = AtomicBool::new(false);
+        let interruptible = matches!(stop, Stop::Interrupted { .. });
+        let deadline = match stop {
+            Stop::Interrupted { deadline } => deadline,
+            Stop::Never => None,
+        };
+        let stop_before_sample = || interruptible && interrupt::interrupted().is_some();
+        let stop_before_pixel = || {
+            stopping.load(Ordering::Relaxed)
+                || stop_before_sample()
+                || deadline.is_some_and(|d| Instant::now() >= d)
+        };
+        let finished = AtomicBool::new(false);
+        std::thread::scope(|scope| {
+            let reporter = settings.progress.then(|| {
+                scope.spawn(|| {
+                    let every = settings.progress_every.unwrap_or(PROGRESS_LOG_SECONDS);
+                    let terminal = std::io::stderr().is_terminal();
+                    self.progress.report(terminal, every, &finished)
+                })
+            });
+            self.pool.install(|| {
+                film.pixels
+                    .par_chunks_mut(width)
+                    .enumerate()
+                    .for_each(|(row, pixels)| {
+                        let y = height - 1 - row;
+                        let mut light_paths = 0u64;
+                        let mut traced = 0u64;
+                        'pixels: for (x, pixel) in pixels.iter_mut().enumerate() {
+                            if pixel.converged {
+                                continue;
+                            }
+                            if stop_before_pixel() {
+                                stopping.store(true, Ordering::Relaxed);
+                                break;
+                            }
+                            let pixel_index = (row * width + x) as u64;
+                            for sample in samples.of(pixel) {
+                                if stop_before_sample() {
+                                    stopping.store(true, Ordering::Relaxed);
+                                    break 'pixels;
+                                }
+                                let at = PixelSample {
+                                    x,
+                                    y,
+                                    pixel_index,
+                                    sample,
+                                };
+                                let mut splats = Splats::default();
+                                let value = self.trace_sample(at, &mut splats);
+                                pixel.add(value, settings.clamp);
+                                for &(sx, sy, splat) in splats.iter() {
+                                    splat_sums.add((height - 1 - sy) * width + sx, splat);
+                                }
+                                light_paths += splats.light_paths as u64;
+                                traced += 1;
+                            }
+                        }
+                        splat_sums.add_light_paths(light_paths);
+                        self.progress.add(traced);
+                    });
+            });
+            finished.store(true, Ordering::Relaxed);
+            if let Some(reporter) = reporter {
+                reporter.thread().unpark();
+            }
+        });
+        splat_sums.add_to(film);
+        let stopped = stopping
+            .load(Ordering::Relaxed)
+            .then(|| match interrupt::interrupted() {
+                Some(signal) => Stopped::Signal(signal),
+                None => Stopped::Deadline,
+            });
+        Ok(RenderStats {
+            seconds: start.elapsed().as_secs_f64(),
+            samples: film.samples() - before.0,
+            dropped: film.dropped() - before.1,
+            fireflies: film.fireflies() - before.2,
+            stopped,
+        })
+    }
+
+    /// One camera sample: sub-pixel `sample mod 4` of the 2x2 grid with the
+    /// tent filter, lens and time only where the scene needs them.
+    fn trace_sample(&self, at: PixelSample, splats: &mut Splats) -> crate::color::Color {
+        let settings = self.settings;
+        let mut sampler = Sampler::new(
+            settings.sampler,
+            at.pixel_index,
+            at.sample as u64,
+            settings.seed,
+        );
+        let (film_x, film_y) = match settings.look.pixels {
+            PixelSampling::Tent => film_position(at.x, at.y, at.sample % 4, sampler.next_2d()),
+            PixelSampling::Centre => (at.x as f64 + 0.5, at.y as f64 + 0.5),
+        };
+        let lens = if self.plan.lens {
+            sampler.next_2d()
+        } else {
+            [0.5, 0.5]
+        };
+        let time = if self.plan.time {
+            sampler.next_f64()
+        } else {
+            0.0
+        };
+        let ray = self.camera.ray(film_x, film_y, lens, time);
+        let sample = CameraSample {
+            pixel_x: at.x,
+            pixel_y: at.y,
+            lens,
+        };
+        settings
+            .integrator
+            .radiance(&self.view, ray, &sample, &mut sampler, splats)
+    }
 }
 
 /// Which sample of which pixel is traced.
@@ -202,43 +390,6 @@ struct PixelSample {
     y: usize,
     pixel_index: u64,
     sample: u32,
-}
-
-/// One camera sample: sub-pixel `sample mod 4` of the 2x2 grid with the tent
-/// filter, lens and time only where the scene needs them.
-fn trace_sample(
-    view: &SceneView,
-    camera: &Camera,
-    plan: SamplingPlan,
-    settings: &RenderSettings,
-    at: PixelSample,
-    splats: &mut Splats,
-) -> crate::color::Color {
-    let mut sampler = Sampler::new(
-        settings.sampler,
-        at.pixel_index,
-        at.sample as u64,
-        settings.seed,
-    );
-    let (film_x, film_y) = match settings.look.pixels {
-        PixelSampling::Tent => film_position(at.x, at.y, at.sample % 4, sampler.next_2d()),
-        PixelSampling::Centre => (at.x as f64 + 0.5, at.y as f64 + 0.5),
-    };
-    let lens = if plan.lens {
-        sampler.next_2d()
-    } else {
-        [0.5, 0.5]
-    };
-    let time = if plan.time { sampler.next_f64() } else { 0.0 };
-    let ray = camera.ray(film_x, film_y, lens, time);
-    let sample = CameraSample {
-        pixel_x: at.x,
-        pixel_y: at.y,
-        lens,
-    };
-    settings
-        .integrator
-        .radiance(view, ray, &sample, &mut sampler, splats)
 }
 
 /// Which sample dimensions a scene needs: a scene pays only for what it uses.
@@ -267,58 +418,4 @@ fn has_motion(root: &Object) -> bool {
         }
     });
     moving
-}
-
-/// Seconds between progress lines when standard error is not a terminal.
-pub const PROGRESS_LOG_SECONDS: f64 = 5.0;
-
-/// Reports the rows done until `finished`: on a terminal, one line
-/// rewritten four times a second; otherwise a line every
-/// [`PROGRESS_LOG_SECONDS`] (percent, samples/s, elapsed, remaining), so
-/// that a batch log grows by a line, not by carriage returns.
-fn report_progress(
-    rows_done: &AtomicUsize,
-    rows: usize,
-    samples_per_row: f64,
-    start: Instant,
-    terminal: bool,
-    every: f64,
-    finished: &std::sync::atomic::AtomicBool,
-) {
-    let tick = if terminal {
-        Duration::from_millis(250)
-    } else {
-        Duration::from_secs_f64(every)
-    };
-    let mut printed = false;
-    loop {
-        std::thread::park_timeout(tick);
-        let done = rows_done.load(Ordering::Relaxed);
-        let over = finished.load(Ordering::Relaxed);
-        if over && !(terminal && printed) {
-            return;
-        }
-        let elapsed = start.elapsed().as_secs_f64();
-        let fraction = done as f64 / rows.max(1) as f64;
-        let left = if done > 0 {
-            format!("{:.0} s left", elapsed / fraction - elapsed)
-        } else {
-            "estimating".to_string()
-        };
-        let rate = done as f64 * samples_per_row / elapsed.max(1e-9) / 1e6;
-        let line = format!(
-            "rendering {:5.1}%  {rate:.2} M samples/s  {elapsed:.0} s elapsed  {left}",
-            fraction * 100.0
-        );
-        if terminal {
-            eprint!("\r{line}    ");
-            printed = true;
-            if over {
-                eprintln!();
-                return;
-            }
-        } else {
-            eprintln!("{line}");
-        }
-    }
 }

@@ -111,6 +111,11 @@ pub struct JobHeader {
     pub height: u32,
     pub crop: Crop,
     pub samples: Range<u32>,
+    /// The film is the checkpoint of a render that stopped part way: its
+    /// pixels hold the first samples of `samples`, not all of them, each
+    /// pixel as many as it got (`render --resume` continues it; `merge`
+    /// refuses it).
+    pub checkpoint: bool,
 }
 
 impl JobHeader {
@@ -140,6 +145,7 @@ impl JobHeader {
             height: settings.height,
             crop,
             samples,
+            checkpoint: false,
         }
     }
 
@@ -162,7 +168,7 @@ impl JobHeader {
     }
 
     /// Every field as (name, text), the identity first: what a film file's
-    /// header holds.
+    /// header holds (`checkpoint` only when it is one).
     pub fn fields(&self) -> Vec<(&'static str, String)> {
         let mut fields = vec![("scene", self.scene.clone())];
         fields.extend(self.identity());
@@ -171,6 +177,9 @@ impl JobHeader {
             "samples",
             format!("{}..{}", self.samples.start, self.samples.end),
         ));
+        if self.checkpoint {
+            fields.push(("checkpoint", "true".to_string()));
+        }
         fields
     }
 
@@ -202,8 +211,23 @@ impl JobHeader {
             height: small("height")?,
             crop: Crop::parse(&text("crop")?)?,
             samples: parse_samples(&text("samples")?)?,
+            checkpoint: field("checkpoint").is_some_and(|value| value == "true"),
         })
     }
+}
+
+/// The first field of [`JobHeader::identity`] in which `header` differs
+/// from `expected`: its name, its value in `header` and in `expected`.
+pub fn first_difference(
+    header: &JobHeader,
+    expected: &JobHeader,
+) -> Option<(&'static str, String, String)> {
+    header
+        .identity()
+        .into_iter()
+        .zip(expected.identity())
+        .find(|((_, found), (_, wanted))| found != wanted)
+        .map(|((name, found), (_, wanted))| (name, found, wanted))
 }
 
 /// A part to merge: its file name and header.
@@ -219,18 +243,11 @@ pub struct Part<'a> {
 pub fn check_parts(parts: &[Part]) -> Result<Vec<String>, String> {
     let first = parts.first().ok_or("no film parts to merge")?;
     for part in &parts[1..] {
-        for ((name, expected), (_, found)) in first
-            .header
-            .identity()
-            .into_iter()
-            .zip(part.header.identity())
-        {
-            if expected != found {
-                return Err(format!(
-                    "{}: {name} is {found}, but {} has {expected}: not a part of the same render",
-                    part.name, first.name
-                ));
-            }
+        if let Some((name, found, expected)) = first_difference(part.header, first.header) {
+            return Err(format!(
+                "{}: {name} is {found}, but {} has {expected}: not a part of the same render",
+                part.name, first.name
+            ));
         }
     }
     let (width, height) = (first.header.width, first.header.height);

@@ -4,12 +4,12 @@
 
 mod common;
 
-use pathtracer::adaptive::{MIN_SAMPLES, StoppingRule, render_adaptive};
+use pathtracer::adaptive::{MIN_SAMPLES, StoppingRule, progress_for};
 use pathtracer::color::Color;
 use pathtracer::film::Film;
 use pathtracer::integrator::Integrator;
 use pathtracer::math::Vec3;
-use pathtracer::render::{RenderSettings, render_into};
+use pathtracer::render::{RenderSettings, RenderStats, Renderer, render_into};
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Material, Object, Scene};
 use pathtracer::world::World;
@@ -86,7 +86,7 @@ fn noiseless_pixels_stop_early_and_noisy_ones_run_to_the_cap() {
         time_budget: None,
     };
     let mut film = Film::new(16, 8);
-    render_adaptive(&scene, &world, &settings(256, 2), rule, &mut film).unwrap();
+    render_adaptively(&scene, &world, &settings(256, 2), rule, &mut film).unwrap();
     for row in film.pixels.chunks(16) {
         for (x, pixel) in row.iter().enumerate() {
             if x < 6 {
@@ -108,9 +108,9 @@ fn adaptive_pixels_equal_fixed_spp_pixels_with_the_same_count() {
         time_budget: None,
     };
     let mut adaptive = Film::new(16, 8);
-    render_adaptive(&scene, &world, &settings(128, 1), rule, &mut adaptive).unwrap();
+    render_adaptively(&scene, &world, &settings(128, 1), rule, &mut adaptive).unwrap();
     let mut twin = Film::new(16, 8);
-    render_adaptive(&scene, &world, &settings(128, 2), rule, &mut twin).unwrap();
+    render_adaptively(&scene, &world, &settings(128, 2), rule, &mut twin).unwrap();
     for (a, b) in adaptive.pixels.iter().zip(&twin.pixels) {
         assert_eq!(a.samples, b.samples);
         assert_eq!(a.sum, b.sum, "thread count changed an adaptive image");
@@ -136,6 +136,19 @@ fn an_exhausted_time_budget_stops_after_the_first_pass() {
         time_budget: Some(0.0),
     };
     let mut film = Film::new(16, 8);
-    let stats = render_adaptive(&scene, &world, &settings(1024, 2), rule, &mut film).unwrap();
+    let stats = render_adaptively(&scene, &world, &settings(1024, 2), rule, &mut film).unwrap();
     assert_eq!(stats.samples, 16 * 8 * MIN_SAMPLES as u64);
+}
+
+/// An adaptive render with a renderer of its own.
+fn render_adaptively(
+    scene: &Scene,
+    world: &World,
+    settings: &RenderSettings,
+    rule: StoppingRule,
+    film: &mut Film,
+) -> Result<RenderStats, String> {
+    let progress = progress_for(film, settings.spp, rule);
+    let renderer = Renderer::new(scene, world, settings, progress)?;
+    pathtracer::adaptive::render_adaptive(&renderer, rule, film)
 }

@@ -295,7 +295,17 @@ fn sigint_during_a_render_removes_its_temporaries_and_exits_130() {
     let (dir, code) = interrupted_render("sigint", "-INT");
     assert_eq!(code, Some(130));
     assert!(temporaries(&dir).is_empty(), "{:?}", temporaries(&dir));
-    assert!(!dir.join("out.pfm").exists());
+    assert_no_image_or_a_partial_one(&dir);
+}
+
+/// Stopped before rendering, a render writes nothing; stopped while
+/// rendering, a partial image that says so, with its checkpoint.
+fn assert_no_image_or_a_partial_one(dir: &Path) {
+    if dir.join("out.pfm").exists() {
+        let sidecar = std::fs::read_to_string(dir.join("out.pfm.json")).expect("its sidecar");
+        assert!(sidecar.contains("\"complete\": false"), "{sidecar}");
+        assert!(dir.join("out.pfm.checkpoint.exr").exists());
+    }
 }
 
 #[test]
@@ -303,4 +313,5 @@ fn sigterm_during_a_render_removes_its_temporaries_and_exits_143() {
     let (dir, code) = interrupted_render("sigterm", "-TERM");
     assert_eq!(code, Some(143));
     assert!(temporaries(&dir).is_empty(), "{:?}", temporaries(&dir));
+    assert_no_image_or_a_partial_one(&dir);
 }

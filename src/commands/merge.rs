@@ -63,6 +63,11 @@ pub fn run(args: &MergeArgs) -> Result<(), String> {
     let mut total: Option<Film> = None;
     for (path, name) in args.parts.iter().zip(&names) {
         let (film, header) = read_film(path)?;
+        if header.checkpoint {
+            return Err(format!(
+                "{name} is the checkpoint of an unfinished render (its pixels stopped at different samples): continue it with `render --resume`, it is not a part to merge"
+            ));
+        }
         if let Some(first) = headers.first() {
             check_parts(&[
                 Part {

@@ -2,16 +2,21 @@
 
 use crate::commands::prepare;
 use std::path::{Path, PathBuf};
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use clap::Args;
 
-use pathtracer::adaptive::{StoppingRule, render_adaptive};
+use pathtracer::adaptive::{StoppingRule, progress_for, render_adaptive};
+use pathtracer::checkpoint::{
+    CHECKPOINT_SECONDS, CheckpointStats, Checkpoints, checkpoint_path, render_resumable,
+};
 use pathtracer::image_io::{
     PendingFile, check_writable, commit_together, encode_image, is_hdr, refuse_inputs,
 };
 use pathtracer::integrator::{Integrator, SceneView};
-use pathtracer::render::{RenderSettings, SamplingPlan, render_into};
+use pathtracer::interrupt;
+use pathtracer::render::{Progress, RenderSettings, Renderer, Samples, SamplingPlan};
+use pathtracer::render_job::{Crop, JobHeader};
 use pathtracer::scene::model::Scene;
 use pathtracer::world::World;
 
@@ -46,6 +51,23 @@ pub struct RenderArgs {
     sampling: SamplingOptions,
     #[command(flatten)]
     job: super::job::JobOptions,
+    /// Write the film to OUTPUT.checkpoint.exr every SECONDS while
+    /// rendering (default 60; 0: only when SIGINT or SIGTERM stops the
+    /// render), so that --resume can continue it.
+    #[arg(long, value_name = "SECONDS", value_parser = parse_interval)]
+    checkpoint: Option<f64>,
+    /// Continue the render from OUTPUT.checkpoint.exr (same scene and
+    /// settings); without one, start from the first sample.
+    #[arg(long)]
+    resume: bool,
+}
+
+/// A checkpoint interval: 0 (none while rendering) or 0.1 s to a day.
+fn parse_interval(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(seconds) if seconds == 0.0 || (0.1..=86400.0).contains(&seconds) => Ok(seconds),
+        _ => Err(format!("'{text}': seconds, 0 or from 0.1 to 86400")),
+    }
 }
 
 pub fn run(args: &RenderArgs) -> Result<(), String> {
@@ -53,6 +75,12 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         if args.output.is_some() || args.target_error.is_some() || args.time_budget.is_some() {
             return Err(
                 "--film writes a film, not an image: no -o, --target-error or --time-budget"
+                    .to_string(),
+            );
+        }
+        if args.checkpoint.is_some() || args.resume {
+            return Err(
+                "--checkpoint and --resume are for image renders; a render job (--film) is rerun whole"
                     .to_string(),
             );
         }
@@ -69,6 +97,20 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     // read and rendered: the temporaries of the image and its sidecar exist
     // from here on.
     check_writable(&output, 1, 1)?;
+    let checkpoint = checkpoint_path(&output);
+    let adaptive = args.target_error.is_some() || args.time_budget.is_some();
+    if adaptive && (args.resume || args.checkpoint.is_some()) {
+        return Err(
+            "--checkpoint and --resume are for fixed-spp renders: not with --target-error or --time-budget (an interrupted adaptive render writes its partial image only)"
+                .to_string(),
+        );
+    }
+    if !args.resume && checkpoint.exists() {
+        return Err(format!(
+            "{}: the checkpoint of an unfinished render of this output is there: --resume continues it (delete it to start again)",
+            checkpoint.display()
+        ));
+    }
     let encoding = args.encoding.encoding();
     encoding.check()?;
     let mut image_file = PendingFile::reserve(&output)?;
@@ -90,11 +132,52 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         target_error: args.target_error,
         time_budget: args.time_budget,
     };
+    let header = JobHeader::new(
+        &args.scene.display().to_string(),
+        scene.load.source_hash,
+        world.triangle_count() as u64,
+        &settings,
+        args.sampling.scene.missing_assets.name(),
+        Crop::full(settings.width, settings.height),
+        0..settings.spp,
+    );
+    let checkpoints = Checkpoints {
+        path: checkpoint,
+        every: Some(args.checkpoint.unwrap_or(CHECKPOINT_SECONDS))
+            .filter(|&seconds| seconds > 0.0)
+            .map(Duration::from_secs_f64),
+        header,
+    };
     let mut film = args.sampling.film(&settings)?;
-    let stats = if rule == StoppingRule::default() {
-        render_into(&scene, &world, &settings, &mut film, 0..settings.spp)?
+    if args.resume {
+        match checkpoints.read()? {
+            Some(partial) => film = partial,
+            None => eprintln!(
+                "warning: {}: no checkpoint to resume: rendering from the first sample",
+                checkpoints.path.display()
+            ),
+        }
+    }
+    // From here a first SIGINT or SIGTERM lets the samples in flight finish
+    // and the partial image (and checkpoint) be written.
+    let _graceful = interrupt::Graceful::start();
+    let (stats, written) = if adaptive {
+        let progress = progress_for(&film, settings.spp, rule);
+        let renderer = Renderer::new(&scene, &world, &settings, progress)?;
+        let stats = render_adaptive(&renderer, rule, &mut film)?;
+        (stats, CheckpointStats::default())
     } else {
-        render_adaptive(&scene, &world, &settings, rule, &mut film)?
+        let samples = Samples::Continue {
+            first: 0,
+            end: settings.spp,
+        };
+        let renderer = Renderer::new(
+            &scene,
+            &world,
+            &settings,
+            Progress::new(samples.count(&film), None),
+        )?;
+        render_resumable(&renderer, &mut film, &checkpoints)?
     };
     let image = film.to_image();
     if args.stats {
@@ -102,16 +185,20 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     }
     image_file.write(&encode_image(&output, &image, &encoding)?)?;
     let pixels = (settings.width as u64 * settings.height as u64).max(1);
+    // What the image holds (a resumed render's earlier samples too).
+    let reached = film.samples() as f64 / pixels as f64;
+    let complete = stats.stopped.is_none();
     if let Some(sidecar) = &mut sidecar_file {
         // HDR images are measurements: say how they were made, next to
         // them, and how an 8-bit output would have encoded them.
         let json = format!(
-            "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}, \"light_paths\": {}, \"look\": \"{}\", \"gamma\": {}, \"exposure\": {}, \"tonemap\": \"{}\"}}\n",
+            "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"spp_asked\": {}, \"complete\": {complete}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}, \"light_paths\": {}, \"look\": \"{}\", \"gamma\": {}, \"exposure\": {}, \"tonemap\": \"{}\"}}\n",
             args.scene.display().to_string(),
             settings.width,
             settings.height,
-            stats.samples as f64 / pixels as f64,
-            stats.samples,
+            reached,
+            settings.spp,
+            film.samples(),
             stats.seconds,
             settings.seed,
             settings.integrator.name(),
@@ -129,15 +216,28 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     // The sidecar first, the image last: a new image always finds its own
     // sidecar beside it; a failure leaves both as they were.
     commit_together(sidecar_file.into_iter().chain([image_file]).collect())?;
+    if complete {
+        // The image is there: the checkpoint it continued has served.
+        checkpoints.remove();
+    }
     let (look, why) = args.sampling.look(&scene);
+    let checkpoint_note = match written.written {
+        0 => String::new(),
+        n => format!(", {n} checkpoints written in {:.2} s", written.seconds),
+    };
     say!(
-        "{}: look {} ({why}), {} integrator, {}x{}, {:.1} spp spent, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped, {} fireflies{}",
+        "{}: look {} ({why}), {} integrator, {}x{}, {:.1} spp {}, render {:.2} s ({:.2} s in all), {:.3} M samples/s, {} NaN/Inf samples dropped, {} fireflies{}{checkpoint_note}",
         output.display(),
         look.name,
         settings.integrator.name(),
         settings.width,
         settings.height,
-        stats.samples as f64 / pixels as f64,
+        reached,
+        if complete {
+            "spent"
+        } else {
+            "reached (interrupted)"
+        },
         stats.seconds,
         started.elapsed().as_secs_f64(),
         stats.samples_per_second() / 1e6,
@@ -148,6 +248,12 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
             None => String::new(),
         }
     );
+    if !complete && !adaptive {
+        say!(
+            "{}: the render so far; `render --resume` with the same arguments continues it",
+            checkpoints.path.display()
+        );
+    }
     Ok(())
 }
 
