@@ -124,6 +124,18 @@ fn three_sample_ranges_merge_to_the_bytes_of_one_render() {
         &path(&dir, "whole.pfm"),
         &path(&dir, "merged.pfm")
     ));
+    // A merged HDR image says how it was made, as a rendered one does:
+    // the same settings and samples, and the parts instead of the seconds.
+    let sidecar = |name: &str| std::fs::read_to_string(path(&dir, name)).expect(name);
+    let (whole, merged) = (sidecar("whole.pfm.json"), sidecar("merged.pfm.json"));
+    assert!(merged.contains("\"parts\": 3,"), "{merged}");
+    let settings = |json: &str| {
+        let start = json.find("\"seed\"").expect("seed");
+        json[start..].to_string()
+    };
+    assert_eq!(settings(&whole), settings(&merged));
+    let head = |json: &str| json[..json.find(", \"samples\"").expect("samples")].to_string();
+    assert_eq!(head(&whole), head(&merged));
     let _ = std::fs::remove_dir_all(&dir);
 }
 

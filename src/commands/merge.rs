@@ -8,11 +8,12 @@ use clap::Args;
 use pathtracer::film::Film;
 use pathtracer::film_file::{encode_film, read_film};
 use pathtracer::image_io::{
-    PendingFile, check_writable, commit_together, encode_image, refuse_inputs,
+    PendingFile, check_writable, commit_together, encode_image, is_hdr, refuse_inputs,
 };
 use pathtracer::render_job::{Crop, JobHeader, Part, check_parts};
 
 use super::EncodingOptions;
+use super::sidecar::{Made, sidecar_json, sidecar_path};
 
 /// Missing regions listed before "and N more".
 const MISSING_SHOWN: usize = 8;
@@ -50,7 +51,17 @@ pub fn run(args: &MergeArgs) -> Result<(), String> {
         .map(PendingFile::reserve)
         .transpose()?;
     let mut film_file = args.film.as_deref().map(PendingFile::reserve).transpose()?;
-    let outputs: Vec<&PendingFile> = image_file.iter().chain(&film_file).collect();
+    let mut sidecar_file = args
+        .output
+        .as_deref()
+        .filter(|path| is_hdr(path))
+        .map(|path| PendingFile::reserve(&sidecar_path(path)))
+        .transpose()?;
+    let outputs: Vec<&PendingFile> = image_file
+        .iter()
+        .chain(&film_file)
+        .chain(&sidecar_file)
+        .collect();
     let inputs: Vec<(&str, &std::path::Path)> = args
         .parts
         .iter()
@@ -117,17 +128,40 @@ pub fn run(args: &MergeArgs) -> Result<(), String> {
             .unwrap_or(0);
         file.write(&encode_film(path, &total, &header)?)?;
     }
+    let pixels = (first.width as u64 * first.height as u64).max(1);
+    let spp_asked = parts
+        .iter()
+        .map(|p| p.header.samples.end)
+        .max()
+        .unwrap_or(0);
     if let (Some(path), Some(file)) = (&args.output, &mut image_file) {
         file.write(&encode_image(path, &total.to_image(), &encoding)?)?;
     }
-    commit_together(film_file.into_iter().chain(image_file).collect())?;
+    if let Some(sidecar) = &mut sidecar_file {
+        let made = Made {
+            spp: total.samples() as f64 / pixels as f64,
+            samples: total.samples(),
+            spp_asked,
+            complete: missing.is_empty(),
+            seconds: None,
+            parts: Some(headers.len()),
+        };
+        sidecar.write(sidecar_json(first, &made, &encoding).as_bytes())?;
+    }
+    // The sidecar before its image, as `render` does.
+    commit_together(
+        film_file
+            .into_iter()
+            .chain(sidecar_file)
+            .chain(image_file)
+            .collect(),
+    )?;
     let written: Vec<String> = args
         .output
         .iter()
         .chain(&args.film)
         .map(|p| p.display().to_string())
         .collect();
-    let pixels = (first.width as u64 * first.height as u64).max(1);
     say!(
         "{}: {} parts of {} (seed {}, look {}, {} integrator), {}x{}, {:.1} spp, {} light subpaths, {} NaN/Inf samples dropped, {} fireflies, {} saturated",
         written.join(", "),

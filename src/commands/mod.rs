@@ -16,6 +16,7 @@ pub mod job;
 pub mod lookalike;
 pub mod merge;
 pub mod render;
+pub mod sidecar;
 
 use std::path::{Path, PathBuf};
 

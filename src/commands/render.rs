@@ -20,6 +20,7 @@ use pathtracer::render_job::{Crop, JobHeader};
 use pathtracer::scene::model::Scene;
 use pathtracer::world::World;
 
+use super::sidecar::{Made, sidecar_json, sidecar_path};
 use super::{EncodingOptions, SamplingOptions, default_output, load_for_render};
 
 #[derive(Args)]
@@ -189,28 +190,15 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let reached = film.samples() as f64 / pixels as f64;
     let complete = stats.stopped.is_none();
     if let Some(sidecar) = &mut sidecar_file {
-        // HDR images are measurements: say how they were made, next to
-        // them, and how an 8-bit output would have encoded them.
-        let json = format!(
-            "{{\"scene\": {:?}, \"width\": {}, \"height\": {}, \"spp\": {}, \"spp_asked\": {}, \"complete\": {complete}, \"samples\": {}, \"seconds\": {:.6}, \"seed\": {}, \"integrator\": \"{}\", \"sampler\": \"{}\", \"max_depth\": {}, \"clamp\": {}, \"light_paths\": {}, \"look\": \"{}\", \"gamma\": {}, \"exposure\": {}, \"tonemap\": \"{}\"}}\n",
-            args.scene.display().to_string(),
-            settings.width,
-            settings.height,
-            reached,
-            settings.spp,
-            film.samples(),
-            stats.seconds,
-            settings.seed,
-            settings.integrator.name(),
-            settings.sampler.name(),
-            settings.max_depth,
-            settings.clamp.map_or("null".to_string(), |c| c.to_string()),
-            settings.light_paths,
-            settings.look.name,
-            encoding.gamma.map_or("null".to_string(), |g| g.to_string()),
-            encoding.exposure,
-            encoding.tonemap.name(),
-        );
+        let made = Made {
+            spp: reached,
+            samples: film.samples(),
+            spp_asked: settings.spp,
+            complete,
+            seconds: Some(stats.seconds),
+            parts: None,
+        };
+        let json = sidecar_json(&checkpoints.header, &made, &encoding);
         sidecar.write(json.as_bytes())?;
     }
     // The sidecar first, the image last: a new image always finds its own
@@ -255,13 +243,6 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         );
     }
     Ok(())
-}
-
-/// `IMAGE.json`, the sidecar of an HDR image.
-fn sidecar_path(image: &Path) -> PathBuf {
-    let mut sidecar = image.as_os_str().to_os_string();
-    sidecar.push(".json");
-    PathBuf::from(sidecar)
 }
 
 /// The files a render reads, which no output may replace.
