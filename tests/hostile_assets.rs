@@ -86,7 +86,7 @@ fn a_16384_square_scene_passed_check_and_then_allocated_13_gb() {
         "{error}"
     );
     assert!(error.contains("--max-memory"), "{error}");
-    let raised = pathtracer(&["check", text(&file), "--max-memory", "64G"]);
+    let raised = pathtracer(&["check", text(&file), "--max-memory", "96G"]);
     assert!(
         raised.status.success(),
         "{}",
