@@ -212,3 +212,82 @@ fn an_image_of_an_emitter_through_an_absorbing_ball_has_its_transmittance() {
         }
     }
 }
+
+#[test]
+fn light_subpaths_are_off_and_said_so_in_scenes_with_media() {
+    // A glass ball under a small light: light subpaths run without media,
+    // and are off (with a note) once a medium fills the scene.
+    let glass = Material {
+        color: Color::WHITE,
+        diffuse: 0.0,
+        refract: 1.0,
+        ..Material::default()
+    };
+    let floor = Material::default();
+    let light = Material {
+        color: Color::BLACK,
+        emission: Color::gray(10.0),
+        ..Material::default()
+    };
+    let root = Object::Group(vec![
+        sphere(Vec3::new(0.0, 0.0, -5.0), 1.0, 0),
+        sphere(Vec3::new(0.0, -1001.0, -5.0), 1000.0, 1),
+        sphere(Vec3::new(0.0, 5.0, -5.0), 0.2, 2),
+    ]);
+    let mut scene = Scene::new(vec![glass, floor, light], root);
+    let world = World::build(&scene);
+    assert!(SceneView::with_look(&scene, &world, Look::PHYSICAL).light_paths);
+    let notes = pathtracer::integrator::media_notes(&scene, Integrator::Path);
+    assert!(notes.is_empty());
+    scene.medium = Some(white_medium(0.01));
+    let view = SceneView::with_look(&scene, &world, Look::PHYSICAL);
+    assert!(view.media && !view.light_paths);
+    let notes = pathtracer::integrator::media_notes(&scene, Integrator::Path);
+    assert!(notes[0].contains("light subpaths"), "{notes:?}");
+    let notes = pathtracer::integrator::media_notes(&scene, Integrator::Original);
+    assert!(notes[0].contains("original estimator ignores"), "{notes:?}");
+}
+
+#[test]
+fn a_directional_light_through_an_absorbing_ball_is_attenuated_twice() {
+    // PA1 lighting (no emitters): a floor lit from straight above, seen
+    // from above through an absorbing ball that also stands between the
+    // floor point and the light: 0.5 (albedo) e^(-sigma 2) twice. A shadow
+    // ray that stopped at the interface would give 0.
+    let absorber = absorber_scene().materials[0].clone();
+    let floor = Material {
+        color: Color::gray(0.5),
+        ..Material::default()
+    };
+    let root = Object::Group(vec![
+        sphere(Vec3::new(0.0, 2.0, 0.0), 1.0, 0),
+        Object::Plane {
+            normal: Vec3::new(0.0, 1.0, 0.0),
+            offset: 0.0,
+            material: 1,
+        },
+    ]);
+    let mut scene = Scene::new(vec![absorber, floor], root);
+    scene
+        .lights
+        .push(pathtracer::scene::model::Light::Directional {
+            direction: Vec3::new(0.0, -1.0, 0.0),
+            color: Color::WHITE,
+        });
+    let world = World::build(&scene);
+    let view = SceneView::with_look(&scene, &world, Look::PHYSICAL);
+    assert!(!view.direct_lights.is_empty());
+    let ray = Ray::new(Vec3::new(0.0, 5.0, 0.0), Vec3::new(0.0, -1.0, 0.0), 0.0);
+    let mut sampler = Sampler::Independent(Rng::for_sample(0, 0, 2));
+    let l = Integrator::Path.radiance(
+        &view,
+        ray,
+        &CameraSample::default(),
+        &mut sampler,
+        &mut Splats::default(),
+    );
+    let want = [0.25, 0.5, 1.0].map(|sigma: f64| 0.5 * (-4.0 * sigma).exp());
+    for (got, want) in [l.r, l.g, l.b].into_iter().zip(want) {
+        assert!((got - want).abs() < 1e-9, "{got} vs {want}");
+    }
+}

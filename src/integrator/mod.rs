@@ -70,8 +70,8 @@ impl Integrator {
 
 /// What a render of `scene` leaves out because of its participating media,
 /// one note each: the estimators other than `path` ignore media, the path
-/// integrator's light subpaths and PA1 lights are off in scenes with media.
-pub fn media_notes(scene: &Scene, look: Look, integrator: Integrator) -> Vec<String> {
+/// integrator's light subpaths are off in scenes with media.
+pub fn media_notes(scene: &Scene, integrator: Integrator) -> Vec<String> {
     if !scene.has_media() {
         return Vec::new();
     }
@@ -89,13 +89,6 @@ pub fn media_notes(scene: &Scene, look: Look, integrator: Integrator) -> Vec<Str
          samples lights and bounces only"
             .to_string(),
     );
-    if !lights::direct_lights(scene, look.point_lights).is_empty() {
-        notes.push(
-            "participating media: point, directional and spot lights are not rendered \
-             in scenes with media"
-                .to_string(),
-        );
-    }
     notes
 }
 

@@ -17,11 +17,15 @@
 //! any other surface blocks them. Interfaces neither scatter nor count as
 //! vertices: the ray goes on unchanged, only its medium changes.
 //!
-//! Light subpaths (caustics) do not account for media and are off in such
-//! scenes, and the PA1 point and directional lights are not added (both
-//! said by a note when rendering, see [`super::media_notes`]).
+//! The PA1 point, spot and directional lights are added at every vertex
+//! with the transmittance on the way (at medium vertices: their irradiance
+//! times the phase function). Light subpaths (caustics) do not account for
+//! media and are off in such scenes (a note says so when rendering, see
+//! [`super::media_notes`]).
 
-use crate::bsdf::GlassChoice;
+use std::f64::consts::PI;
+
+use crate::bsdf::{Bsdf, GlassChoice};
 use crate::color::Color;
 use crate::lights::LightSample;
 use crate::math::{Point3, Ray, Vec3};
@@ -30,9 +34,9 @@ use crate::sampler::Sampler;
 use crate::scene::model::{Material, Scene};
 use crate::shading::Shading;
 
-use super::SceneView;
 use super::path::{ROULETTE_DEPTH, SHADOW_SHORTENING, power_heuristic};
 use super::scatter::{bsdf_at, emitter_choice, miss, sample};
+use super::{SceneView, lights};
 
 /// Interfaces a ray (or a shadow ray) crosses between two vertices before
 /// it is given up (it can only be reached by a degenerate geometry that
@@ -73,6 +77,9 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
                     let travel = ray.direction;
                     result += throughput
                         * medium_light_sample(view, inside, &point, &travel, ray.time, sampler);
+                    if !view.direct_lights.is_empty() {
+                        result += throughput * medium_pa1_lights(view, inside, &point, &travel);
+                    }
                     let wi = inside.phase.sample(&travel, sampler.next_2d());
                     origin = Some(Origin {
                         point,
@@ -120,6 +127,9 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
         let bsdf = bsdf_at(view, &at, &wo, GlassChoice::Fresnel);
         if bsdf.is_black() {
             break;
+        }
+        if !view.direct_lights.is_empty() {
+            result += throughput * surface_pa1_lights(view, &at, &bsdf, &wo, medium);
         }
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
             break;
@@ -242,6 +252,53 @@ fn medium_light_sample(
     }
     let weight = power_heuristic(light.pdf, phase);
     light.emission * seen * (phase * weight / light.pdf)
+}
+
+/// The PA1 point, spot and directional lights at a surface (as
+/// [`lights::direct`], with the transmittance of the media on the way
+/// instead of an opaque-or-not shadow ray).
+fn surface_pa1_lights(
+    view: &SceneView,
+    at: &Shading,
+    bsdf: &Bsdf,
+    wo: &Vec3,
+    medium: Option<&Medium>,
+) -> Color {
+    let mut sum = Color::BLACK;
+    for light in view.direct_lights {
+        let Some(way) = lights::toward(light, &at.point) else {
+            continue;
+        };
+        if at.geometric.dot(&way.to_light) <= 0.0 {
+            continue;
+        }
+        let reflected = bsdf.eval(wo, &way.to_light);
+        if reflected.is_black() {
+            continue;
+        }
+        let from = at.spawn_origin(&way.to_light);
+        let reach = way.distance * lights::SHADOW_REACH;
+        let seen = transmittance(view, from, way.to_light, reach, medium, 0.0);
+        sum += reflected * way.color * seen * PI;
+    }
+    sum
+}
+
+/// The PA1 lights scattered at a medium vertex: their irradiance `pi *
+/// colour` (the framework's convention, no distance falloff) times the
+/// phase function and the transmittance on the way.
+fn medium_pa1_lights(view: &SceneView, medium: &Medium, point: &Point3, travel: &Vec3) -> Color {
+    let mut sum = Color::BLACK;
+    for light in view.direct_lights {
+        let Some(way) = lights::toward(light, point) else {
+            continue;
+        };
+        let phase = medium.phase.eval(travel, &way.to_light);
+        let reach = way.distance * lights::SHADOW_REACH;
+        let seen = transmittance(view, *point, way.to_light, reach, Some(medium), 0.0);
+        sum += way.color * seen * (phase * PI);
+    }
+    sum
 }
 
 /// Transmittance from `from` along the unit `direction` over `distance`,

@@ -240,6 +240,29 @@ mod tests {
     }
 
     #[test]
+    fn mist_becomes_the_scene_medium_and_its_rates_are_checked() {
+        let text = "PerspectiveCamera { width 2 height 2 mist 0.998 0.9985 0.2 }";
+        let doc = parse(text, Path::new("t.txt")).expect("parses");
+        let scene = build(&doc, Path::new("t.txt"), &LoadOptions::default()).expect("builds");
+        let medium = scene.medium.expect("mist medium");
+        assert!((medium.sigma_a.r + 0.998f64.ln()).abs() < 1e-15);
+        assert!((medium.sigma_s.b + 0.9985f64.ln()).abs() < 1e-15);
+        assert!(scene.warnings[0].message.contains("Henyey-Greenstein"));
+        let e = camera("PerspectiveCamera { width 2 height 2 mist 1.5 0.9 0 }").expect_err("rate");
+        assert!(e.contains("t.txt:1:43") && e.contains("(0, 1]"), "{e}");
+        let text = "Medium { sigmaS 1 1 1 }\nPerspectiveCamera { width 2 height 2 mist 0.5 0.5 0 }";
+        let doc = parse(text, Path::new("t.txt")).expect("parses");
+        let scene = build(&doc, Path::new("t.txt"), &LoadOptions::default()).expect("builds");
+        assert_eq!(scene.medium.expect("block").sigma_a.r, 0.0);
+        assert!(
+            scene
+                .warnings
+                .iter()
+                .any(|w| w.message.contains("replaces it"))
+        );
+    }
+
+    #[test]
     fn sizes_are_checked() {
         assert!(camera("PerspectiveCamera { width 1000000000 height 1000000000 }").is_err());
         let e = camera("PerspectiveCamera {\n width\n}").expect_err("no number");
