@@ -55,13 +55,15 @@ crosscheck-glossy: build
 		--tolerance 0.01 --out output/crosscheck_glossy
 
 # Participating media against Mitsuba's volpath (homogeneous media, HG phase
-# function), deep paths so that the two depth conventions do not matter.
+# function), deep paths so that the two depth conventions do not matter;
+# MEDIA_SCENE=testcases/crosscheck_fog.txt for a scene-wide medium.
+MEDIA_SCENE ?= testcases/crosscheck_media.txt
 crosscheck-media: build
 	python3 -m venv $(VENV)
 	$(VENV)/bin/pip install -q mitsuba numpy
 	$(VENV)/bin/python scripts/crosscheck.py --variant $(VARIANT) --look physical \
-		--scene testcases/crosscheck_media.txt --max-depth 32 --spp 256 --reference-spp 2048 \
-		--width 128 --height 96 --tolerance 0.01 --out output/crosscheck_media
+		--scene $(MEDIA_SCENE) --max-depth 32 --spp 256 --reference-spp 2048 \
+		--width 128 --height 96 --tolerance 0.01 --out output/$(basename $(notdir $(MEDIA_SCENE)))
 
 # Mitsuba's error-against-time curve (same CSV as `make converge`), into
 # output/curves/<scene>/ (venv from `make crosscheck`):

@@ -723,6 +723,13 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
                          else mitsuba_bsdf(material, texture))
         if material.get("interior"):
             entry["interior"] = mitsuba_medium(material["interior"])
+        elif scene.medium is not None:
+            # ours: crossing a surface without a Medium of its own keeps the
+            # ray's medium (the scene's inside a glass ball in fog), and so
+            # does reflection; Mitsuba's volpath takes the medium on the side
+            # a ray leaves to (after reflection too: a plane whose normal
+            # points out of the box would send reflected rays into vacuum)
+            entry["interior"] = mitsuba_medium(scene.medium)
         if scene.medium is not None:
             entry["exterior"] = mitsuba_medium(scene.medium)
         if max(material["emission"]) > 0:
