@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench converge lookalike crosscheck crosscheck-glossy mitsuba-converge gallery fuzz fuzz-seeds farm-test clean
+.PHONY: build render test lint bench converge lookalike crosscheck crosscheck-glossy crosscheck-media mitsuba-converge gallery fuzz fuzz-seeds farm-test clean
 
 build:
 	$(CARGO) build --release
@@ -53,6 +53,17 @@ crosscheck-glossy: build
 	$(VENV)/bin/python scripts/crosscheck.py --variant $(VARIANT) --look physical \
 		--scene testcases/crosscheck_glossy.txt --spp 256 --reference-spp 4096 \
 		--tolerance 0.01 --out output/crosscheck_glossy
+
+# Participating media against Mitsuba's volpath (homogeneous media, HG phase
+# function), deep paths so that the two depth conventions do not matter;
+# MEDIA_SCENE=testcases/crosscheck_fog.txt for a scene-wide medium.
+MEDIA_SCENE ?= testcases/crosscheck_media.txt
+crosscheck-media: build
+	python3 -m venv $(VENV)
+	$(VENV)/bin/pip install -q mitsuba numpy
+	$(VENV)/bin/python scripts/crosscheck.py --variant $(VARIANT) --look physical \
+		--scene $(MEDIA_SCENE) --max-depth 32 --spp 256 --reference-spp 2048 \
+		--width 128 --height 96 --tolerance 0.01 --out output/$(basename $(notdir $(MEDIA_SCENE)))
 
 # Mitsuba's error-against-time curve (same CSV as `make converge`), into
 # output/curves/<scene>/ (venv from `make crosscheck`):

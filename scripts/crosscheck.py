@@ -199,7 +199,26 @@ MATERIAL_FIELDS = {"color": 3, "diffuseColor": 3, "emission": 3, "diffusionRate"
                    "specularRate": 1, "refractRate": 1, "refractiveIndex": 1, "texture": "word",
                    "specularColor": 3, "shininess": 1, "roughness": 1,
                    # Cambrian (cam) dialect: `type DIFF|SPEC|REFR`, IOR `refractive_rate`
-                   "type": "word", "refractive_rate": 1, "texture_file": "word"}
+                   "type": "word", "refractive_rate": 1, "texture_file": "word",
+                   # participating media (README "Participating media")
+                   "interface": 0}
+MEDIUM_FIELDS = {"sigmaA": 3, "sigma_a": 3, "sigmaS": 3, "sigma_s": 3, "g": 1}
+
+
+def read_medium(block):
+    """A `Medium { sigmaA sigmaS g }` block as {sigma_a, sigma_s, g}."""
+    f = read_fields(block, MEDIUM_FIELDS)
+    return {"sigma_a": f.get("sigmaA", f.get("sigma_a", [0.0, 0.0, 0.0])),
+            "sigma_s": f.get("sigmaS", f.get("sigma_s", [0.0, 0.0, 0.0])),
+            "g": f.get("g", [0.0])[0]}
+
+
+def mitsuba_medium(medium):
+    """Mitsuba's homogeneous medium: sigma_t and albedo per channel, HG phase."""
+    sigma_t = [a + s for a, s in zip(medium["sigma_a"], medium["sigma_s"])]
+    albedo = [s / t if t > 0 else 0.0 for s, t in zip(medium["sigma_s"], sigma_t)]
+    return {"type": "homogeneous", "sigma_t": rgb(sigma_t), "albedo": rgb(albedo),
+            "scale": 1.0, "phase": {"type": "hg", "g": float(medium["g"])}}
 CAMBRIAN_TYPES = {"DIFF": (1.0, 0.0, 0.0), "SPEC": (0.0, 1.0, 0.0), "REFR": (0.0, 0.0, 1.0)}
 MIN_ROUGHNESS = 1e-3  # as src/scene/model.rs: below it, mirror and smooth glass
 
@@ -271,6 +290,7 @@ class Scene:
         self.current_material = 0
         self.cambrian_seen = False
         self.has_lights = False
+        self.medium = None
         for item in top:
             if not isinstance(item, Block):
                 warn(f"stray top-level word '{item}' skipped")
@@ -286,6 +306,8 @@ class Scene:
                 self.read_group(item, np.eye(4))
             elif item.name == "Lights":
                 self.has_lights = True
+            elif item.name == "Medium":
+                self.medium = read_medium(item)
             else:
                 warn(f"top-level block '{item.name}' skipped")
         if self.camera is None:
@@ -330,7 +352,14 @@ class Scene:
                     texture = None
             if "specularColor" in f and max(f["specularColor"]) > 0:
                 warn("specularColor/shininess (our Phong lobe) are not translated")
+            interior = None
+            for nested in f.get("_blocks", []):
+                if nested.name == "Medium":
+                    interior = read_medium(nested)
+                else:
+                    warn(f"block '{nested.name}' in a material skipped")
             self.materials.append({
+                "interior": interior, "interface": f.get("interface", False),
                 "color": color, "emission": f.get("emission", [0.0, 0.0, 0.0]),
                 "diffuse": diffuse, "specular": specular, "refract": refract,
                 "ior": ior, "texture": texture,
@@ -573,9 +602,13 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
     if any(c > 0 for c in scene.background):
         warn("non-black Background: ours shows it to camera rays only; Mitsuba gets black")
     T = mi.ScalarTransform4f
+    media = scene.medium is not None or any(m["interior"] for m in scene.materials)
+    max_depth = getattr(args, "max_depth", None)
     d = {
         "type": "scene",
-        "integrator": {"type": "path", "max_depth": 6, "rr_depth": 100, "hide_emitters": False},
+        "integrator": {"type": "volpath" if media else "path",
+                       "max_depth": (max_depth or 5) + 1, "rr_depth": 100,
+                       "hide_emitters": False},
         "sensor": {
             "type": sensor_type,
             "to_world": T().look_at(origin=center.tolist(), target=(center + direction).tolist(),
@@ -606,6 +639,8 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
                          f"{'crosses' if gap < 0 else 'grazes'} plane n={n.tolist()} "
                          f"d={offset} (gap {gap:.3g}): Mitsuba's shadow-ray epsilon leaks "
                          "its light past the plane (brighter than ours nearby)")
+    if scene.medium is not None:
+        d["sensor"]["medium"] = mitsuba_medium(scene.medium)
     images = {}
     for index, shape in enumerate(scene.shapes):
         material = scene.materials[shape["material"]]
@@ -684,7 +719,19 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
                      "to_world": T(matrix.tolist())}
         else:
             continue
-        entry["bsdf"] = mitsuba_bsdf(material, texture)
+        entry["bsdf"] = ({"type": "null"} if material.get("interface")
+                         else mitsuba_bsdf(material, texture))
+        if material.get("interior"):
+            entry["interior"] = mitsuba_medium(material["interior"])
+        elif scene.medium is not None:
+            # ours: crossing a surface without a Medium of its own keeps the
+            # ray's medium (the scene's inside a glass ball in fog), and so
+            # does reflection; Mitsuba's volpath takes the medium on the side
+            # a ray leaves to (after reflection too: a plane whose normal
+            # points out of the box would send reflected rays into vacuum)
+            entry["interior"] = mitsuba_medium(scene.medium)
+        if scene.medium is not None:
+            entry["exterior"] = mitsuba_medium(scene.medium)
         if max(material["emission"]) > 0:
             entry["emitter"] = {"type": "area", "radiance": rgb(material["emission"])}
         d[f"shape_{index:03d}_{kind}"] = entry
@@ -803,6 +850,8 @@ def render_ours(args, out_path):
     command = [binary, "render", args.scene, "-o", out_path, "--spp", str(args.spp),
                "--seed", str(args.seed), "--width", str(args.width), "--height",
                str(args.height), "--look", args.look, "--quiet"]
+    if args.max_depth is not None:
+        command += ["--max-depth", str(args.max_depth)]
     t0 = time.perf_counter()
     result = subprocess.run(command, capture_output=True, text=True)
     elapsed = time.perf_counter() - t0
@@ -840,6 +889,9 @@ def main():
                         help="our look: physical for the exact Fresnel equations of glass")
     parser.add_argument("--flat-textures", action="store_true",
                         help="give textured materials their mean texel instead of the map")
+    parser.add_argument("--max-depth", type=int, default=None,
+                        help="scattering vertices (ours; Mitsuba's max_depth is one more); "
+                             "default: the look's, 5")
     parser.add_argument("--tolerance", type=float, default=0.03,
                         help="largest accepted |mean ratio - 1| per channel")
     args = parser.parse_args()

@@ -27,6 +27,7 @@ pub mod lights;
 pub mod limits;
 pub mod look;
 pub mod math;
+pub mod medium;
 pub mod metrics;
 pub mod pairs;
 pub mod plot;

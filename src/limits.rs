@@ -259,7 +259,7 @@ mod tests {
             error.contains("--max-memory") && error.contains("4.0 GiB"),
             "{error}"
         );
-        let raised = MemoryBudget { bytes: 64 << 30 };
+        let raised = MemoryBudget { bytes: 96 << 30 };
         assert!(raised.check_image(16384, 16384).is_ok());
         assert!(raised.check_image(MAX_IMAGE_SIDE as u64 + 1, 1).is_err());
     }

@@ -317,6 +317,9 @@ pub fn load_for_render(path: &Path, options: &SceneOptions) -> Result<Scene, Str
 /// [`Look::adapt`]: crate::look::Look::adapt
 pub fn prepare(scene: &mut Scene, settings: &RenderSettings) -> World {
     settings.look.adapt(scene);
+    for note in pathtracer::integrator::media_notes(scene, settings.integrator) {
+        eprintln!("note: {note}");
+    }
     World::build_with(scene, settings.look.one_sided_planes)
 }
 

@@ -15,7 +15,7 @@ use std::f64::consts::PI;
 use crate::bsdf::Bsdf;
 use crate::color::Color;
 use crate::look::PointLights;
-use crate::math::{Ray, Vec3};
+use crate::math::{Point3, Ray, Vec3};
 use crate::scene::model::{Light, Scene};
 use crate::shading::Shading;
 use crate::world::World;
@@ -43,39 +43,13 @@ pub fn direct_lights(scene: &Scene, rule: PointLights) -> &[Light] {
 pub fn direct(world: &World, lights: &[Light], at: &Shading, bsdf: &Bsdf, wo: &Vec3) -> Color {
     let mut sum = Color::BLACK;
     for light in lights {
-        let (to_light, distance, color) = match light {
-            Light::Point { position, color } => {
-                let offset = position - at.point;
-                let distance = offset.norm();
-                if distance <= 0.0 {
-                    continue;
-                }
-                (offset / distance, distance, *color)
-            }
-            Light::Spot {
-                position,
-                direction,
-                color,
-                exponent,
-            } => {
-                let offset = position - at.point;
-                let distance = offset.norm();
-                if distance <= 0.0 {
-                    continue;
-                }
-                let to_light = offset / distance;
-                let cone = direction.dot(&-to_light).max(0.0).powf(*exponent);
-                (to_light, distance, *color * cone)
-            }
-            Light::Directional { direction, color } => {
-                let Some(d) = (-direction).try_normalize(1e-12) else {
-                    continue;
-                };
-                (d, f64::INFINITY, *color)
-            }
-            // Disk and area lights are emitting geometry in the world (the
-            // scene builder adds it): found by rays, not here.
-            Light::Disk { .. } | Light::Area { .. } => continue,
+        let Some(LightRay {
+            to_light,
+            distance,
+            color,
+        }) = toward(light, &at.point)
+        else {
+            continue;
         };
         if at.geometric.dot(&to_light) <= 0.0 {
             continue;
@@ -86,12 +60,67 @@ pub fn direct(world: &World, lights: &[Light], at: &Shading, bsdf: &Bsdf, wo: &V
         }
         let origin = at.spawn_origin(&to_light);
         let shadow = Ray::new(origin, to_light, 0.0);
-        if world.occluded(&shadow, 0.0, distance * (1.0 - 1e-9)) {
+        if world.occluded(&shadow, 0.0, distance * SHADOW_REACH) {
             continue;
         }
         sum += reflected * color * PI;
     }
     sum
+}
+
+/// The fraction of the distance to a light that its shadow ray covers.
+pub const SHADOW_REACH: f64 = 1.0 - 1e-9;
+
+/// The way from a lit point to a point, spot or directional light.
+pub struct LightRay {
+    /// Unit direction from the point to the light.
+    pub to_light: Vec3,
+    /// Distance to the light (infinite for a directional one).
+    pub distance: f64,
+    /// The light's colour, times a spot light's cone factor.
+    pub color: Color,
+}
+
+/// The way from `point` to `light`, or `None` for lights that are
+/// emitting geometry (disk and area lights) and degenerate ones.
+pub fn toward(light: &Light, point: &Point3) -> Option<LightRay> {
+    let (to_light, distance, color) = match light {
+        Light::Point { position, color } => {
+            let offset = position - point;
+            let distance = offset.norm();
+            if distance <= 0.0 {
+                return None;
+            }
+            (offset / distance, distance, *color)
+        }
+        Light::Spot {
+            position,
+            direction,
+            color,
+            exponent,
+        } => {
+            let offset = position - point;
+            let distance = offset.norm();
+            if distance <= 0.0 {
+                return None;
+            }
+            let to_light = offset / distance;
+            let cone = direction.dot(&-to_light).max(0.0).powf(*exponent);
+            (to_light, distance, *color * cone)
+        }
+        Light::Directional { direction, color } => {
+            let d = (-direction).try_normalize(1e-12)?;
+            (d, f64::INFINITY, *color)
+        }
+        // Disk and area lights are emitting geometry in the world (the
+        // scene builder adds it): found by rays, not here.
+        Light::Disk { .. } | Light::Area { .. } => return None,
+    };
+    Some(LightRay {
+        to_light,
+        distance,
+        color,
+    })
 }
 
 #[cfg(test)]

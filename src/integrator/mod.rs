@@ -6,6 +6,7 @@ pub mod original;
 pub mod path;
 pub mod raycast;
 pub mod scatter;
+pub mod volpath;
 
 use crate::bsdf::{LobeSet, lobe_sets};
 use crate::camera::Camera;
@@ -60,10 +61,35 @@ impl Integrator {
     ) -> Color {
         match self {
             Integrator::Original => original::radiance(view, ray, sampler),
+            Integrator::Path if view.media => volpath::radiance(view, ray, sampler),
             Integrator::Path => path::radiance(view, ray, sample, sampler, splats),
             Integrator::RayCast => raycast::radiance(view, ray),
         }
     }
+}
+
+/// What a render of `scene` leaves out because of its participating media,
+/// one note each: the estimators other than `path` ignore media, the path
+/// integrator's light subpaths are off in scenes with media.
+pub fn media_notes(scene: &Scene, integrator: Integrator) -> Vec<String> {
+    if !scene.has_media() {
+        return Vec::new();
+    }
+    let mut notes = Vec::new();
+    if integrator != Integrator::Path {
+        let name = integrator.name();
+        notes.push(format!(
+            "the {name} estimator ignores participating media (Medium, mist): \
+             '--integrator path' renders them"
+        ));
+        return notes;
+    }
+    notes.push(
+        "participating media: light subpaths (caustics) are off, the path integrator \
+         samples lights and bounces only"
+            .to_string(),
+    );
+    notes
 }
 
 /// Where a camera ray comes from: its pixel and lens sample (what light
@@ -118,9 +144,12 @@ pub struct SceneView<'a> {
     /// Scattering vertices before a path ends (the original: 5).
     pub max_depth: u32,
     /// Whether the path integrator traces light subpaths for caustics (the
-    /// scene has mirror or glass and small enough emitters: see
-    /// [`caustics::prepare`]).
+    /// scene has mirror or glass and small enough emitters, and no media:
+    /// see [`caustics::prepare`]).
     pub light_paths: bool,
+    /// Whether the scene has participating media (the path integrator is
+    /// then [`volpath`]).
+    pub media: bool,
     /// The camera of the film being rendered, which light subpaths connect
     /// to (`None`: no light tracing, as for paths traced outside a render).
     pub camera: Option<Camera>,
@@ -140,13 +169,18 @@ impl<'a> SceneView<'a> {
 
     pub fn with_look(scene: &'a Scene, world: &'a World, look: Look) -> SceneView<'a> {
         let mut emitters = Emitters::build(scene, world);
+        let media = scene.has_media();
         SceneView {
             scene,
             world,
             direct_lights: lights::direct_lights(scene, look.point_lights),
             // One-sided planes make visibility depend on direction, which
             // light subpaths (traced from the light's side) cannot honour.
-            light_paths: !look.one_sided_planes && caustics::prepare(scene, world, &mut emitters),
+            // Light subpaths do not account for transmittance (see `volpath`).
+            light_paths: !look.one_sided_planes
+                && !media
+                && caustics::prepare(scene, world, &mut emitters),
+            media,
             emitters,
             max_depth: original::MAX_DEPTH,
             camera: None,

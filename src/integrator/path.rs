@@ -43,11 +43,11 @@ use super::{CameraSample, SceneView, Splats};
 /// the original's five vertices every continuation pays for itself (ending
 /// paths from the third vertex cost 5-17% efficiency on the report scenes);
 /// roulette protects longer `--max-depth` paths.
-const ROULETTE_DEPTH: u32 = 5;
+pub(super) const ROULETTE_DEPTH: u32 = 5;
 
 /// Shadow rays stop this fraction short of the light point, so that they do
 /// not find the emitter itself.
-const SHADOW_SHORTENING: f64 = 1e-7;
+pub(super) const SHADOW_SHORTENING: f64 = 1e-7;
 
 /// Where the current ray left a vertex by a continuous lobe: what MIS needs
 /// to weight the emission the ray finds.
@@ -288,7 +288,7 @@ fn light_sample(
 
 /// The power heuristic (exponent 2) for one sample of density `f` against
 /// another strategy of density `g`.
-fn power_heuristic(f: f64, g: f64) -> f64 {
+pub(super) fn power_heuristic(f: f64, g: f64) -> f64 {
     let (f2, g2) = (f * f, g * g);
     if f2 + g2 > 0.0 { f2 / (f2 + g2) } else { 0.0 }
 }

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use crate::color::Color;
 use crate::math::{Matrix, Point3, Vec3};
+use crate::medium::Medium;
 use crate::scene::error::Diagnostic;
 use crate::texture::Texture;
 
@@ -28,6 +29,9 @@ pub struct Scene {
     pub lights: Vec<Light>,
     /// The object tree: groups and transforms over shapes.
     pub root: Object,
+    /// The medium that fills the scene outside the shapes with a medium of
+    /// their own (a top-level `Medium` block, or the camera's `mist`).
+    pub medium: Option<Medium>,
     pub dialect: Dialect,
     /// Words of the file that tell renderers of one dialect apart (see
     /// `look::Look::detect`).
@@ -39,6 +43,11 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// Whether light crosses a participating medium anywhere in the scene.
+    pub fn has_media(&self) -> bool {
+        self.medium.is_some() || self.materials.iter().any(|m| m.interior.is_some())
+    }
+
     /// A scene around `root`, for scenes built in code: a pinhole camera at
     /// the origin looking down -z (16x16, the original's field of view), a
     /// black background, no lights, the canonical dialect.
@@ -60,6 +69,7 @@ impl Scene {
             textures: Vec::new(),
             lights: Vec::new(),
             root,
+            medium: None,
             dialect: Dialect::Canonical,
             fingerprints: Vec::new(),
             warnings: Vec::new(),

@@ -49,7 +49,28 @@ pub fn summary(scene: &Scene) -> String {
         scene.lights.len(),
         scene.warnings.len(),
     );
-    text
+    text + &media(scene)
+}
+
+/// What the scene's participating media are, or nothing without media.
+fn media(scene: &Scene) -> String {
+    let bounded = scene
+        .materials
+        .iter()
+        .filter(|m| m.interior.is_some())
+        .count();
+    let filling = match &scene.medium {
+        Some(m) => {
+            let t = m.sigma_t();
+            format!(
+                "a medium fills the scene (sigma_t {} {} {}, g {})",
+                t.r, t.g, t.b, m.phase.g
+            )
+        }
+        None if bounded > 0 => "no medium fills the scene".to_string(),
+        None => return String::new(),
+    };
+    format!(" Media: {filling}; {bounded} materials have a medium inside.")
 }
 
 #[cfg(test)]
@@ -68,5 +89,19 @@ mod tests {
         assert!(text.contains("4x3 pixels"), "{text}");
         assert!(text.contains("30 degrees vertical"), "{text}");
         assert!(text.contains("2 objects (1 triangles)"), "{text}");
+        assert!(!text.contains("Media"), "{text}");
+        let scene = build_text(
+            "PerspectiveCamera { width 4 height 3 mist 0.5 1 0 }\n\
+             Materials { Material { interface Medium { sigmaS 1 1 1 } } }",
+        )
+        .expect("builds");
+        let text = super::summary(&scene);
+        let sigma = -(0.5f64.ln());
+        assert!(
+            text.contains(&format!(
+                "Media: a medium fills the scene (sigma_t {sigma} {sigma} {sigma}"
+            )) && text.contains("1 materials have a medium inside"),
+            "{text}"
+        );
     }
 }

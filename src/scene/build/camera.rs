@@ -1,5 +1,6 @@
 //! The camera block, read as a key -> value map with every dialect's synonyms.
 
+use crate::look::Mist;
 use crate::math::{Point3, Vec3};
 use crate::scene::ast::Block;
 use crate::scene::build::{Context, Cursor};
@@ -11,11 +12,13 @@ pub const MAX_PIXELS: u64 = 1 << 28;
 
 const DEFAULT_SIZE: u32 = 512;
 
+/// The camera, and Cambrian's `mist` with where it was written (the
+/// builder turns it into the scene's medium, see [`Mist`]).
 pub fn build_camera(
     context: &mut Context,
     block: &Block,
     location: Location,
-) -> Result<CameraDesc, SceneError> {
+) -> Result<(CameraDesc, Option<(Mist, Location)>), SceneError> {
     let name = block.name.as_str();
     let mut center = Point3::zeros();
     let mut direction = Vec3::new(0.0, 0.0, -1.0);
@@ -29,6 +32,7 @@ pub fn build_camera(
     let mut focus = None;
     let mut lens_radius = 0.0;
     let mut defocus_angle = None;
+    let mut mist = None;
     let mut cursor = Cursor::of(block);
     while let Some(item) = cursor.next() {
         let Some(key) = item.word() else {
@@ -79,8 +83,10 @@ pub fn build_camera(
                 )?;
             }
             "mist" => {
-                cursor.take_numbers();
-                context.not_rendered(item.location, key, "there is no fog")?;
+                mist = Some((
+                    read_mist(context, &mut cursor, item.location)?,
+                    item.location,
+                ))
             }
             "dispersion" => {
                 cursor.take_numbers();
@@ -149,7 +155,7 @@ pub fn build_camera(
         Some(a) => return Err(context.error(location, format!("camera angle {a} is out of range"))),
         None => None,
     };
-    Ok(CameraDesc {
+    let camera = CameraDesc {
         center,
         direction,
         up,
@@ -159,6 +165,40 @@ pub fn build_camera(
         canvas_distance,
         focus_distance,
         lens_radius,
+    };
+    Ok((camera, mist))
+}
+
+/// `mist e s b`: two survival rates per unit length in (0, 1] and the
+/// direction bias, which is not reproduced (scattering follows a
+/// Henyey-Greenstein lobe of the same mean cosine, see [`Mist`]).
+fn read_mist(
+    context: &mut Context,
+    cursor: &mut Cursor,
+    location: Location,
+) -> Result<Mist, SceneError> {
+    let mut numbers = [0.0; 3];
+    for (slot, what) in numbers.iter_mut().zip(["survival", "scatter survival"]) {
+        let at = cursor.here();
+        *slot = cursor.number(context, "mist")?;
+        if !(*slot > 0.0 && *slot <= 1.0) {
+            return Err(context.error(
+                at,
+                format!("the mist's {what} rate must be in (0, 1], found {slot}"),
+            ));
+        }
+    }
+    numbers[2] = cursor.number(context, "mist")?;
+    context.warn(
+        location,
+        "'mist' is rendered as a physical medium: its upward scattering bias is \
+         approximated by a Henyey-Greenstein lobe of the same mean cosine"
+            .into(),
+    )?;
+    Ok(Mist {
+        survival: numbers[0],
+        scatter_survival: numbers[1],
+        bias: numbers[2],
     })
 }
 
@@ -197,6 +237,29 @@ mod tests {
         assert!((c.lens_radius - 2.0).abs() < 1e-9);
         let c = camera("DepthCamera { width 2 height 2 focalLength 2 }").expect("ok");
         assert_eq!(c.focus_distance, 3.0);
+    }
+
+    #[test]
+    fn mist_becomes_the_scene_medium_and_its_rates_are_checked() {
+        let text = "PerspectiveCamera { width 2 height 2 mist 0.998 0.9985 0.2 }";
+        let doc = parse(text, Path::new("t.txt")).expect("parses");
+        let scene = build(&doc, Path::new("t.txt"), &LoadOptions::default()).expect("builds");
+        let medium = scene.medium.expect("mist medium");
+        assert!((medium.sigma_a.r + 0.998f64.ln()).abs() < 1e-15);
+        assert!((medium.sigma_s.b + 0.9985f64.ln()).abs() < 1e-15);
+        assert!(scene.warnings[0].message.contains("Henyey-Greenstein"));
+        let e = camera("PerspectiveCamera { width 2 height 2 mist 1.5 0.9 0 }").expect_err("rate");
+        assert!(e.contains("t.txt:1:43") && e.contains("(0, 1]"), "{e}");
+        let text = "Medium { sigmaS 1 1 1 }\nPerspectiveCamera { width 2 height 2 mist 0.5 0.5 0 }";
+        let doc = parse(text, Path::new("t.txt")).expect("parses");
+        let scene = build(&doc, Path::new("t.txt"), &LoadOptions::default()).expect("builds");
+        assert_eq!(scene.medium.expect("block").sigma_a.r, 0.0);
+        assert!(
+            scene
+                .warnings
+                .iter()
+                .any(|w| w.message.contains("replaces it"))
+        );
     }
 
     #[test]

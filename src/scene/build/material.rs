@@ -2,6 +2,7 @@
 
 use crate::color::Color;
 use crate::scene::ast::{Block, ItemKind};
+use crate::scene::build::medium::build_medium;
 use crate::scene::build::textures::{MapName, SurfaceMapRef};
 use crate::scene::build::weights::{Fields, Kind, preset, resolve};
 use crate::scene::build::{Context, Cursor};
@@ -85,10 +86,15 @@ fn build_material(
 ) -> Result<MaterialSpec, SceneError> {
     let name = block.name.as_str();
     let mut f = Fields::default();
+    let mut interior = None;
+    let mut interface = false;
     let mut cursor = Cursor::of(block);
     while let Some(item) = cursor.next() {
         let Some(key) = item.word() else {
             match item.block() {
+                Some(medium) if medium.name == "Medium" => {
+                    interior = Some(build_medium(context, medium)?);
+                }
                 Some(fresnel) if fresnel.name == "Fresnel" => {
                     f.angular = Some(read_fresnel(context, fresnel)?);
                 }
@@ -99,9 +105,23 @@ fn build_material(
             }
             continue;
         };
+        if key == "interface" {
+            interface = true;
+            continue;
+        }
         read_field(context, &mut cursor, &mut f, key, item.location, name)?;
     }
-    resolve(context, f, name, location)
+    let mut spec = resolve(context, f, name, location)?;
+    if interface && !spec.material.emission.is_black() {
+        context.not_rendered(
+            location,
+            "emission",
+            "an interface neither scatters nor emits",
+        )?;
+    }
+    spec.material.interior = interior;
+    spec.material.interface = interface;
+    Ok(spec)
 }
 
 /// cav's `Fresnel { fbase b fscale s power p }`.

@@ -7,6 +7,7 @@ mod dialect;
 mod lights;
 mod lobes;
 mod material;
+mod medium;
 mod meshes;
 mod mtl;
 mod obj;
@@ -138,6 +139,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
     let mut material_blocks: Vec<&Block> = Vec::new();
     let mut group_blocks: Vec<(&Block, Location)> = Vec::new();
     let mut lights = Vec::new();
+    let mut scene_medium = None;
     for item in &document.items {
         let Some(block) = item.block() else {
             context.skip_item(item, "the file")?;
@@ -156,6 +158,15 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
             }
             "Lights" | "DiskLights" => lights.extend(lights::build_lights(&mut context, block)?),
             "Background" => background = build_background(&mut context, block)?,
+            "Medium" => {
+                if scene_medium.is_some() {
+                    context.warn(
+                        item.location,
+                        "a second scene-wide Medium replaces the first".into(),
+                    )?;
+                }
+                scene_medium = Some(medium::build_medium(&mut context, block)?);
+            }
             "Materials" => material_blocks.push(block),
             "Group" => group_blocks.push((block, item.location)),
             "Textures" => {
@@ -181,7 +192,17 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
             "the file has no camera block (PerspectiveCamera)".into(),
         ));
     };
-    let camera = camera::build_camera(&mut context, camera_block, camera_location)?;
+    let (camera, mist) = camera::build_camera(&mut context, camera_block, camera_location)?;
+    if let Some((mist, at)) = mist {
+        if scene_medium.is_some() {
+            context.warn(
+                at,
+                "'mist' is not rendered: the scene's Medium block replaces it".into(),
+            )?;
+        } else {
+            scene_medium = Some(mist.medium());
+        }
+    }
     let mut specs = Vec::new();
     for block in material_blocks {
         specs.extend(material::build_materials(&mut context, block)?);
@@ -226,6 +247,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         textures,
         lights,
         root,
+        medium: scene_medium,
         dialect,
         fingerprints: look_fingerprints(document),
         warnings: context.warnings,

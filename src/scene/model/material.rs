@@ -4,6 +4,7 @@
 
 use crate::checker::Checker;
 use crate::color::Color;
+use crate::medium::Medium;
 use crate::uv_rule::UvRule;
 
 /// One normalised material: the weights of the original's three lobes
@@ -48,6 +49,14 @@ pub struct Material {
     /// incidence (cav's `Fresnel { fbase fscale power }`); they replace
     /// `specular` and `refract`, and the diffuse weight is the rest.
     pub angular_weights: Option<AngularWeights>,
+    /// The medium inside the shapes of this material (a `Medium` block in
+    /// the material): a ray that crosses their surface inwards enters it,
+    /// one that crosses outwards returns to the scene's medium. `None`:
+    /// crossing the surface does not change the medium.
+    pub interior: Option<Medium>,
+    /// An `interface`: the surface neither scatters nor emits, rays cross
+    /// it unchanged (only the medium changes: the boundary of a medium).
+    pub interface: bool,
 }
 
 impl Material {
@@ -70,6 +79,8 @@ impl Material {
         phong: None,
         coat: None,
         angular_weights: None,
+        interior: None,
+        interface: false,
     };
 
     /// Whether some lobe of the material is a perfect mirror or smooth glass
