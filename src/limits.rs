@@ -15,6 +15,13 @@ pub const DEFAULT_MEMORY_BUDGET: u64 = 4 << 30;
 /// Largest image width or height, in pixels.
 pub const MAX_IMAGE_SIDE: u32 = 65_536;
 
+/// Largest scene file (and texture descriptor `.txt`, which is parsed like
+/// one), in bytes (64 MiB). The largest scene of the course is a few
+/// kilobytes and a hand-written or generated scene of a million objects
+/// stays well under it (meshes go in OBJ files), while it keeps
+/// `check /dev/zero` or a huge file from being read into memory whole.
+pub const MAX_SCENE_BYTES: u64 = 64 << 20;
+
 /// Largest mesh (OBJ) file, in bytes.
 pub const MAX_MESH_BYTES: u64 = 1 << 30;
 

@@ -47,11 +47,10 @@ impl fmt::Display for Diagnostic {
 /// Why a scene could not be read.
 #[derive(Debug)]
 pub enum SceneError {
-    /// The file could not be read at all.
-    Io {
-        file: PathBuf,
-        error: std::io::Error,
-    },
+    /// The file could not be read at all, or was refused before reading
+    /// (a directory, a device, larger than `limits::MAX_SCENE_BYTES`); the
+    /// message names the file.
+    Io { file: PathBuf, message: String },
     /// A syntax or build error at a place in the file.
     At(Diagnostic),
 }
@@ -59,7 +58,7 @@ pub enum SceneError {
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            SceneError::Io { file, error } => write!(f, "{}: {}", file.display(), error),
+            SceneError::Io { message, .. } => f.write_str(message),
             SceneError::At(diagnostic) => diagnostic.fmt(f),
         }
     }
