@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use crate::limits::{MAX_MESH_BYTES, read_within};
 use crate::math::{Point3, Vec3};
+use crate::scene::build::degenerate::triangle_without_area;
 use crate::scene::build::obj_check;
 use crate::scene::model::{MeshData, OWN_MATERIAL};
 
@@ -38,7 +39,8 @@ pub struct LoadedObj {
     pub warnings: Vec<String>,
 }
 
-/// Loads an OBJ file; a missing `.mtl` is only a warning.
+/// Loads an OBJ file; a missing `.mtl` is only a warning, and so are
+/// triangles without area (left out, counted in one warning per file).
 pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     let options = tobj::LoadOptions {
         triangulate: true,
@@ -86,8 +88,9 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     .map_err(|_| format!("cannot read mesh '{}': malformed OBJ", path.display()))?;
     let (models, materials) =
         loaded.map_err(|e| format!("cannot read mesh '{}': {e}", path.display()))?;
-    let warnings = warnings.into_inner();
+    let mut warnings = warnings.into_inner();
     let mut faces = Vec::new();
+    let mut flat = 0usize;
     let mut mesh = MeshData::default();
     let mut normals: Option<Vec<Vec3>> = Some(Vec::new());
     let mut uvs: Option<Vec<[f64; 2]>> = Some(Vec::new());
@@ -135,9 +138,21 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
                 }
                 *slot = global as u32;
             }
+            let [a, b, c] = triangle.map(|i| &mesh.positions[i as usize]);
+            if triangle_without_area(a, b, c) {
+                flat += 1;
+                continue;
+            }
             mesh.triangles.push(triangle);
             faces.push(m.material_id.map_or(OWN_MATERIAL, |id| id as u32));
         }
+    }
+    if flat > 0 {
+        warnings.push(format!(
+            "mesh '{}': {flat} of {} triangles have no area (corners on one line): they are left out",
+            path.display(),
+            flat + mesh.triangles.len()
+        ));
     }
     let has_vertices = !mesh.positions.is_empty();
     mesh.normals = normals.filter(|_| has_vertices);
