@@ -1,7 +1,8 @@
 //! Hostile scene and descriptor files (issue 12): a scene file or a rub
 //! texture descriptor that is larger than `limits::MAX_SCENE_BYTES`, a
 //! device such as `/dev/zero` is refused before it is read,
-//! with a message naming the file, and a non-zero exit.
+//! with a message naming the file, and a non-zero exit; a path of
+//! thousands of bytes is cut in the middle in messages.
 //!
 //! Each test spawns the binary (`HOSTILE_BIN` runs them against another
 //! build) and kills it if it has not ended after [`DEADLINE`]: the old build
@@ -140,4 +141,38 @@ fn a_descriptor_linked_to_dev_zero_was_read_forever() {
     let error = check_fails(&descriptor_scene(&dir, &descriptor));
     assert!(error.contains("scene.txt:3:"), "{error}");
     assert!(error.contains("is not a regular file"), "{error}");
+}
+
+#[test]
+fn a_path_of_thousands_of_bytes_was_shown_whole_in_messages() {
+    // 15 folders of 200 bytes: 3 kB, within Linux's 4096-byte paths.
+    let mut deep = temp_dir("long-path");
+    for _ in 0..15 {
+        deep.push("d".repeat(200));
+    }
+    std::fs::create_dir_all(&deep).expect("deep folders");
+    let mesh = deep.join("bad.obj");
+    std::fs::write(&mesh, "v 0 0 0\nv 1 0 0\nv 0 1 nan\nf 1 2 3\n").expect("write mesh");
+    let scene = deep.join("scene.txt");
+    std::fs::write(
+        &scene,
+        format!(
+            "PerspectiveCamera {{ center 0 0 10 direction 0 0 -1 up 0 1 0 angle 40 width 8 \
+             height 8 }}\nMaterials {{ Material {{ color 1 1 1 }} }}\n\
+             Group {{ TriangleMesh {{ obj_file {} }} }}\n",
+            mesh.display()
+        ),
+    )
+    .expect("write scene");
+    let error = check_fails(&scene);
+    let first = error.lines().next().unwrap_or_default();
+    // Both paths (the scene's and the mesh's) are cut to their bound.
+    let bound = 2 * pathtracer::limits::MAX_SHOWN_PATH + 100;
+    assert!(first.chars().count() < bound, "{} chars", first.len());
+    assert_eq!(first.matches('…').count(), 2, "{first}");
+    let start = std::env::temp_dir().display().to_string();
+    assert!(first.starts_with(&format!("error: {start}")), "{first}");
+    assert!(first.contains("/scene.txt:3:"), "{first}");
+    assert!(first.contains("/bad.obj:3: "), "{first}");
+    assert!(first.contains("not a finite number"), "{first}");
 }

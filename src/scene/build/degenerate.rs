@@ -2,10 +2,9 @@
 //! rectangle with a zero edge or two parallel ones (and a scene triangle
 //! or rectangle with coordinates so large that its area overflows).
 //!
-//! The renderer cannot hit or sample them (it leaves such a rectangle out
-//! and would divide by their zero area as emitters), so the build leaves
-//! them out with a warning at their block, and counts a mesh's in one
-//! warning per file. Zero and negative radii are `shapes::Fields::radius`'s,
+//! They have no surface to see or to emit from (the world already drops
+//! such a rectangle silently), so the build leaves them out with a warning
+//! at their block, and counts a mesh's in one warning per file. Zero and negative radii are `shapes::Fields::radius`'s,
 //! a zero normal is an error (`shapes::Fields::nonzero`).
 
 use crate::math::{Point3, Vec3};

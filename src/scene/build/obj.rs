@@ -9,6 +9,7 @@ use crate::limits::{MAX_MESH_BYTES, read_within};
 use crate::math::{Point3, Vec3};
 use crate::scene::build::degenerate::triangle_without_area;
 use crate::scene::build::obj_check;
+use crate::scene::error::shown_path;
 use crate::scene::model::{MeshData, OWN_MATERIAL};
 
 /// A `.mtl` file as read: where it is and its text (to find the lines of
@@ -50,7 +51,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     };
     let text = read_obj_text(path)?;
     obj_check::check_obj_text(&text)
-        .map_err(|problem| format!("{}:{}: {}", path.display(), problem.line, problem.message))?;
+        .map_err(|problem| format!("{}:{}: {}", shown_path(path), problem.line, problem.message))?;
     let folder = path.parent().unwrap_or(Path::new("")).to_path_buf();
     // tobj calls this once per `mtllib`, in order, and appends the materials
     // it returns: record each library with its text and material count.
@@ -63,7 +64,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
             Err(e) => {
                 warnings.borrow_mut().push(format!(
                     "mesh '{}': materials not loaded ({e})",
-                    path.display()
+                    shown_path(path)
                 ));
                 return Err(tobj::LoadError::OpenFileFailed);
             }
@@ -75,8 +76,8 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
                 .push((MaterialLibrary { path: full, text }, materials.len())),
             Err(e) => warnings.borrow_mut().push(format!(
                 "mesh '{}': materials of '{}' not loaded ({e})",
-                path.display(),
-                full.display()
+                shown_path(path),
+                shown_path(&full)
             )),
         }
         result
@@ -85,9 +86,9 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     let loaded = catch_unwind(AssertUnwindSafe(|| {
         tobj::load_obj_buf(&mut reader, &options, load_library)
     }))
-    .map_err(|_| format!("cannot read mesh '{}': malformed OBJ", path.display()))?;
+    .map_err(|_| format!("cannot read mesh '{}': malformed OBJ", shown_path(path)))?;
     let (models, materials) =
-        loaded.map_err(|e| format!("cannot read mesh '{}': {e}", path.display()))?;
+        loaded.map_err(|e| format!("cannot read mesh '{}': {e}", shown_path(path)))?;
     let mut warnings = warnings.into_inner();
     let mut faces = Vec::new();
     let mut flat = 0usize;
@@ -132,7 +133,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
                 if index as usize >= count || global > u32::MAX as usize {
                     return Err(format!(
                         "mesh '{}': vertex index {} out of range",
-                        path.display(),
+                        shown_path(path),
                         index
                     ));
                 }
@@ -150,7 +151,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     if flat > 0 {
         warnings.push(format!(
             "mesh '{}': {flat} of {} triangles have no area (corners on one line): they are left out",
-            path.display(),
+            shown_path(path),
             flat + mesh.triangles.len()
         ));
     }
@@ -196,7 +197,7 @@ fn read_obj_text(path: &Path) -> Result<String, String> {
         let line = 1 + bytes[..offset].iter().filter(|&&b| b == b'\n').count();
         return Err(format!(
             "{}:{line}: not a text OBJ file (a NUL byte at offset {offset})",
-            path.display()
+            shown_path(path)
         ));
     }
     Ok(String::from_utf8_lossy(&bytes).into_owned())
