@@ -15,6 +15,13 @@ pub const DEFAULT_MEMORY_BUDGET: u64 = 4 << 30;
 /// Largest image width or height, in pixels.
 pub const MAX_IMAGE_SIDE: u32 = 65_536;
 
+/// Largest scene file (and texture descriptor `.txt`, which is parsed like
+/// one), in bytes (64 MiB). The largest scene of the course is a few
+/// kilobytes and a hand-written or generated scene of a million objects
+/// stays well under it (meshes go in OBJ files), while it keeps
+/// `check /dev/zero` or a huge file from being read into memory whole.
+pub const MAX_SCENE_BYTES: u64 = 64 << 20;
+
 /// Largest mesh (OBJ) file, in bytes.
 pub const MAX_MESH_BYTES: u64 = 1 << 30;
 
@@ -33,6 +40,12 @@ pub const MAX_PATH_DEPTH: u32 = 10_000;
 
 /// Longest token shown whole in a message; longer ones are cut with an ellipsis.
 pub const MAX_SHOWN_TOKEN: usize = 40;
+
+/// Longest path shown whole in a message, in characters; longer ones keep
+/// their start and end (where the folder and the file's name are) with an
+/// ellipsis between, so a path of thousands of bytes does not bury the
+/// reason. Far above the length of any real project's paths.
+pub const MAX_SHOWN_PATH: usize = 200;
 
 /// Largest radiance a sample or a pixel may carry, per channel: half of
 /// `f32::MAX`, so that a pixel's mean (at most this) plus light tracing's
@@ -178,7 +191,7 @@ impl MemoryBudget {
 /// before anything is read: a directory, a device such as `/dev/zero`, a
 /// pipe or an oversized file is refused at once, never read forever.
 pub fn read_within(path: &Path, max_bytes: u64, limit_name: &str) -> Result<Vec<u8>, String> {
-    let shown = path.display();
+    let shown = crate::scene::error::shown_path(path);
     let metadata = std::fs::metadata(path).map_err(|e| format!("'{shown}': {e}"))?;
     if metadata.is_dir() {
         return Err(format!("'{shown}' is a directory, not a file"));

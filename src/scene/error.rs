@@ -2,9 +2,9 @@
 
 use std::borrow::Cow;
 use std::fmt;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-use crate::limits::MAX_SHOWN_TOKEN;
+use crate::limits::{MAX_SHOWN_PATH, MAX_SHOWN_TOKEN};
 
 /// A token of the scene text as a message shows it: whole up to
 /// `MAX_SHOWN_TOKEN` characters, else its first ones and an ellipsis (cut on
@@ -14,6 +14,22 @@ pub fn shown(token: &str) -> Cow<'_, str> {
         Some((end, _)) => Cow::Owned(format!("{}…", &token[..end])),
         None => Cow::Borrowed(token),
     }
+}
+
+/// A path as a message shows it: whole up to `MAX_SHOWN_PATH` characters,
+/// else its first and last ones with an ellipsis between (cut on character
+/// boundaries): the start says where it is, the end names the file.
+pub fn shown_path(path: &Path) -> String {
+    let text = path.to_string_lossy();
+    let count = text.chars().count();
+    if count <= MAX_SHOWN_PATH {
+        return text.into_owned();
+    }
+    let head = (MAX_SHOWN_PATH - 1) / 2;
+    let tail = MAX_SHOWN_PATH - 1 - head;
+    let start: String = text.chars().take(head).collect();
+    let end: String = text.chars().skip(count - tail).collect();
+    format!("{start}…{end}")
 }
 
 /// A position in a scene file (1-based line and column).
@@ -36,7 +52,7 @@ impl fmt::Display for Diagnostic {
         write!(
             f,
             "{}:{}:{}: {}",
-            self.file.display(),
+            shown_path(&self.file),
             self.location.line,
             self.location.column,
             self.message
@@ -47,11 +63,10 @@ impl fmt::Display for Diagnostic {
 /// Why a scene could not be read.
 #[derive(Debug)]
 pub enum SceneError {
-    /// The file could not be read at all.
-    Io {
-        file: PathBuf,
-        error: std::io::Error,
-    },
+    /// The file could not be read at all, or was refused before reading
+    /// (a directory, a device, larger than `limits::MAX_SCENE_BYTES`); the
+    /// message names the file.
+    Io { file: PathBuf, message: String },
     /// A syntax or build error at a place in the file.
     At(Diagnostic),
 }
@@ -59,7 +74,7 @@ pub enum SceneError {
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            SceneError::Io { file, error } => write!(f, "{}: {}", file.display(), error),
+            SceneError::Io { message, .. } => f.write_str(message),
             SceneError::At(diagnostic) => diagnostic.fmt(f),
         }
     }
@@ -80,5 +95,20 @@ mod tests {
         let cut = shown(&long);
         assert_eq!(cut.chars().count(), MAX_SHOWN_TOKEN + 1);
         assert!(cut.ends_with('…'));
+    }
+
+    #[test]
+    fn long_paths_keep_their_start_and_end() {
+        assert_eq!(shown_path(Path::new("mesh/bunny.obj")), "mesh/bunny.obj");
+        let exact = "é".repeat(MAX_SHOWN_PATH);
+        assert_eq!(shown_path(Path::new(&exact)), exact);
+        let long = format!("/start/{}/end.obj", "é".repeat(10_000));
+        let cut = shown_path(Path::new(&long));
+        assert_eq!(cut.chars().count(), MAX_SHOWN_PATH);
+        assert!(
+            cut.starts_with("/start/") && cut.ends_with("é/end.obj"),
+            "{cut}"
+        );
+        assert_eq!(cut.matches('…').count(), 1);
     }
 }

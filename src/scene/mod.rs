@@ -9,6 +9,7 @@ pub mod summary;
 
 use std::path::{Path, PathBuf};
 
+use crate::limits::{MAX_SCENE_BYTES, read_within};
 use crate::scene::error::SceneError;
 use crate::scene::model::{Dialect, Scene};
 
@@ -63,12 +64,17 @@ impl MissingAssets {
     }
 }
 
-/// Reads, parses and builds a scene file. Bytes that are not UTF-8 are decoded lossily.
+/// Reads, parses and builds a scene file. Bytes that are not UTF-8 are
+/// decoded lossily. A directory, a device or a file over
+/// [`MAX_SCENE_BYTES`] is refused before it is read.
 pub fn load_scene(path: &Path, options: &LoadOptions) -> Result<Scene, SceneError> {
-    let bytes = std::fs::read(path).map_err(|error| SceneError::Io {
-        file: path.to_path_buf(),
-        error,
-    })?;
+    let bytes =
+        read_within(path, MAX_SCENE_BYTES, "limits::MAX_SCENE_BYTES").map_err(|message| {
+            SceneError::Io {
+                file: path.to_path_buf(),
+                message,
+            }
+        })?;
     let started = std::time::Instant::now();
     let text = String::from_utf8_lossy(&bytes);
     let document = parse(&text, path)?;

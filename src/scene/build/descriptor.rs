@@ -24,6 +24,7 @@ use std::path::{Path, PathBuf};
 
 use crate::checker::Checker;
 use crate::color::Color;
+use crate::limits::{MAX_SCENE_BYTES, read_within};
 use crate::scene::MissingAssets;
 use crate::scene::ast::{Block, Item};
 use crate::scene::build::material::PathRef;
@@ -59,10 +60,10 @@ pub fn read(context: &mut Context, named: &PathRef) -> Result<Descriptor, SceneE
             return missing_file(context, named.location, missing);
         }
     };
-    let text = std::fs::read(&file).map_err(|e| {
+    let text = read_within(&file, MAX_SCENE_BYTES, "limits::MAX_SCENE_BYTES").map_err(|e| {
         context.error(
             named.location,
-            format!("cannot read texture descriptor '{}': {e}", file.display()),
+            format!("cannot read texture descriptor: {e}"),
         )
     })?;
     let document = crate::scene::parse(&String::from_utf8_lossy(&text), &file)?;

@@ -14,7 +14,7 @@ use std::sync::Arc;
 
 use crate::scene::build::textures::MaterialImages;
 use crate::scene::build::{Context, mtl, obj};
-use crate::scene::error::{Location, SceneError};
+use crate::scene::error::{Location, SceneError, shown_path};
 use crate::scene::model::{Dialect, MeshData, OWN_MATERIAL};
 
 /// The `MaterialIndex` that set the current material: its value and where.
@@ -100,7 +100,7 @@ impl Meshes {
             self.files.insert(path.to_path_buf(), file);
         }
         let Some(file) = self.files.get_mut(path) else {
-            return Err(context.error(at, format!("mesh '{}' was not kept", path.display())));
+            return Err(context.error(at, format!("mesh '{}' was not kept", shown_path(path))));
         };
         let mesh = Arc::clone(&file.mesh);
         let plain = |mesh| MeshInstance {
@@ -115,7 +115,7 @@ impl Meshes {
         {
             let message = format!(
                 "mesh '{}': its .mtl materials are overridden by MaterialIndex {} (line {})",
-                path.display(),
+                shown_path(path),
                 choice.index,
                 choice.location.line
             );

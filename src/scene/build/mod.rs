@@ -2,6 +2,7 @@
 
 mod camera;
 mod cursor;
+mod degenerate;
 mod descriptor;
 mod dialect;
 mod lights;

@@ -21,7 +21,7 @@ use crate::scene::build::Context;
 use crate::scene::build::material::PathRef;
 use crate::scene::build::obj::{MaterialLibrary, ObjMaterials};
 use crate::scene::build::textures::{MapName, MaterialImages, SurfaceMapRef};
-use crate::scene::error::{Location, SceneError};
+use crate::scene::error::{Location, SceneError, shown_path};
 use crate::scene::model::{Material, Phong};
 
 /// Converts the materials of an OBJ (`obj`, read at `at` in the scene).
@@ -174,7 +174,7 @@ impl Reader<'_, '_> {
         let Some(file) = find_image(folder, &spec.file) else {
             let message = format!(
                 "mesh '{}': image '{}' of '{}' in material '{}' not found ({}), ignored",
-                self.obj.display(),
+                shown_path(self.obj),
                 spec.file,
                 keys[0],
                 self.name,
@@ -193,7 +193,7 @@ impl Reader<'_, '_> {
     fn not_rendered(&mut self, key: &str, what: &str) -> Result<(), SceneError> {
         let message = format!(
             "mesh '{}': {what} of material '{}' is not rendered ({})",
-            self.obj.display(),
+            shown_path(self.obj),
             self.name,
             self.place(&[key])
         );
@@ -204,7 +204,7 @@ impl Reader<'_, '_> {
     fn place(&self, keys: &[&str]) -> String {
         let line = line_of(&self.library.text, self.name, keys)
             .map_or_else(|| "?".to_string(), |l| l.to_string());
-        format!("{}:{line}", self.library.path.display())
+        format!("{}:{line}", shown_path(&self.library.path))
     }
 }
 

@@ -7,7 +7,9 @@ use std::path::{Path, PathBuf};
 
 use crate::limits::{MAX_MESH_BYTES, read_within};
 use crate::math::{Point3, Vec3};
+use crate::scene::build::degenerate::triangle_without_area;
 use crate::scene::build::obj_check;
+use crate::scene::error::shown_path;
 use crate::scene::model::{MeshData, OWN_MATERIAL};
 
 /// A `.mtl` file as read: where it is and its text (to find the lines of
@@ -38,7 +40,8 @@ pub struct LoadedObj {
     pub warnings: Vec<String>,
 }
 
-/// Loads an OBJ file; a missing `.mtl` is only a warning.
+/// Loads an OBJ file; a missing `.mtl` is only a warning, and so are
+/// triangles without area (left out, counted in one warning per file).
 pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     let options = tobj::LoadOptions {
         triangulate: true,
@@ -48,7 +51,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     };
     let text = read_obj_text(path)?;
     obj_check::check_obj_text(&text)
-        .map_err(|problem| format!("{}:{}: {}", path.display(), problem.line, problem.message))?;
+        .map_err(|problem| format!("{}:{}: {}", shown_path(path), problem.line, problem.message))?;
     let folder = path.parent().unwrap_or(Path::new("")).to_path_buf();
     // tobj calls this once per `mtllib`, in order, and appends the materials
     // it returns: record each library with its text and material count.
@@ -61,7 +64,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
             Err(e) => {
                 warnings.borrow_mut().push(format!(
                     "mesh '{}': materials not loaded ({e})",
-                    path.display()
+                    shown_path(path)
                 ));
                 return Err(tobj::LoadError::OpenFileFailed);
             }
@@ -73,8 +76,8 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
                 .push((MaterialLibrary { path: full, text }, materials.len())),
             Err(e) => warnings.borrow_mut().push(format!(
                 "mesh '{}': materials of '{}' not loaded ({e})",
-                path.display(),
-                full.display()
+                shown_path(path),
+                shown_path(&full)
             )),
         }
         result
@@ -83,11 +86,12 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     let loaded = catch_unwind(AssertUnwindSafe(|| {
         tobj::load_obj_buf(&mut reader, &options, load_library)
     }))
-    .map_err(|_| format!("cannot read mesh '{}': malformed OBJ", path.display()))?;
+    .map_err(|_| format!("cannot read mesh '{}': malformed OBJ", shown_path(path)))?;
     let (models, materials) =
-        loaded.map_err(|e| format!("cannot read mesh '{}': {e}", path.display()))?;
-    let warnings = warnings.into_inner();
+        loaded.map_err(|e| format!("cannot read mesh '{}': {e}", shown_path(path)))?;
+    let mut warnings = warnings.into_inner();
     let mut faces = Vec::new();
+    let mut flat = 0usize;
     let mut mesh = MeshData::default();
     let mut normals: Option<Vec<Vec3>> = Some(Vec::new());
     let mut uvs: Option<Vec<[f64; 2]>> = Some(Vec::new());
@@ -129,15 +133,27 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
                 if index as usize >= count || global > u32::MAX as usize {
                     return Err(format!(
                         "mesh '{}': vertex index {} out of range",
-                        path.display(),
+                        shown_path(path),
                         index
                     ));
                 }
                 *slot = global as u32;
             }
+            let [a, b, c] = triangle.map(|i| &mesh.positions[i as usize]);
+            if triangle_without_area(a, b, c) {
+                flat += 1;
+                continue;
+            }
             mesh.triangles.push(triangle);
             faces.push(m.material_id.map_or(OWN_MATERIAL, |id| id as u32));
         }
+    }
+    if flat > 0 {
+        warnings.push(format!(
+            "mesh '{}': {flat} of {} triangles have no area (corners on one line): they are left out",
+            shown_path(path),
+            flat + mesh.triangles.len()
+        ));
     }
     let has_vertices = !mesh.positions.is_empty();
     mesh.normals = normals.filter(|_| has_vertices);
@@ -181,7 +197,7 @@ fn read_obj_text(path: &Path) -> Result<String, String> {
         let line = 1 + bytes[..offset].iter().filter(|&&b| b == b'\n').count();
         return Err(format!(
             "{}:{line}: not a text OBJ file (a NUL byte at offset {offset})",
-            path.display()
+            shown_path(path)
         ));
     }
     Ok(String::from_utf8_lossy(&bytes).into_owned())

@@ -6,6 +6,7 @@ use crate::limits::MAX_NESTING;
 use crate::math::{Matrix, Vec3};
 use crate::scene::MissingAssets;
 use crate::scene::ast::{Block, ItemKind};
+use crate::scene::build::degenerate::why_without_area;
 use crate::scene::build::meshes::{MaterialChoice, Meshes};
 use crate::scene::build::profile::read_profile;
 use crate::scene::build::shapes::{Fields, build_shape};
@@ -150,6 +151,11 @@ impl ObjectBuilder {
         location: Location,
     ) -> Result<Option<Object>, SceneError> {
         if let Some(shape) = build_shape(context, block, location, self.current)? {
+            if let Some(why) = why_without_area(&shape) {
+                let message = format!("a {} {why}: it is left out", block.name);
+                context.warn(location, message)?;
+                return Ok(None);
+            }
             return Ok(Some(shape));
         }
         match block.name.as_str() {

@@ -3,6 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::scene::LoadOptions;
+use crate::scene::error::shown_path;
 
 /// Candidate locations of `relative`, in the order they are tried: `--base` if given,
 /// else the scene file's grand-parent; then the scene's own directory; then the
@@ -50,7 +51,7 @@ pub fn resolve(
 pub fn describe_tried(tried: &[PathBuf]) -> String {
     tried
         .iter()
-        .map(|p| format!("'{}'", p.display()))
+        .map(|p| format!("'{}'", shown_path(p)))
         .collect::<Vec<_>>()
         .join(", ")
 }

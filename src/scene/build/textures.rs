@@ -26,7 +26,7 @@ use crate::scene::build::descriptor::{self, Descriptor};
 use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::build::texture_file::read_texture;
 use crate::scene::build::{Context, paths};
-use crate::scene::error::SceneError;
+use crate::scene::error::{SceneError, shown_path};
 use crate::scene::model::{Bump, Material, Object};
 use crate::texture::Texture;
 
@@ -249,7 +249,7 @@ impl Loader {
         let texture = read_texture(&file, context.options.memory_budget).map_err(|e| {
             context.error(
                 path.location,
-                format!("cannot read texture '{}': {e}", file.display()),
+                format!("cannot read texture '{}': {e}", shown_path(&file)),
             )
         })?;
         let index = self.push(texture);
