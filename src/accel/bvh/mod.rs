@@ -4,7 +4,10 @@
 //! The BVH knows only boxes and their indices; callers keep the primitives and
 //! answer the leaf tests through a closure.
 
+mod build;
+
 use crate::math::{Aabb, Ray, inverse_direction};
+use build::{BinaryNode, Bounds, Item};
 
 /// Size of the largest traversal stack. The build never makes a tree deeper than
 /// this, so traversal cannot overflow it.
@@ -15,12 +18,6 @@ const SMALL_STACK: usize = 8;
 const MEDIUM_STACK: usize = 32;
 /// Deepest level the build may create (leaves are forced below it).
 const MAX_DEPTH: usize = STACK_SIZE - 4;
-/// Number of SAH bins per axis.
-const BIN_COUNT: usize = 16;
-/// Leaves at most this large are accepted when the SAH says so.
-const MAX_LEAF_SIZE: usize = 4;
-/// Cost of visiting an interior node relative to one primitive test.
-const TRAVERSAL_COST: f64 = 1.0;
 
 #[derive(Clone, Copy, Debug)]
 struct Node {
@@ -30,6 +27,23 @@ struct Node {
     offset: u32,
     /// Number of primitives; 0 for interior nodes.
     count: u32,
+}
+
+/// Copies the subtree at `slot` of the built tree to `nodes` in depth-first
+/// order, without the gaps of the build.
+fn compact(built: &[BinaryNode], slot: usize, nodes: &mut Vec<Node>) {
+    let node = built[slot];
+    let index = nodes.len();
+    nodes.push(Node {
+        bounds: node.bounds.to_aabb(),
+        offset: node.offset,
+        count: node.count,
+    });
+    if node.count == 0 {
+        compact(built, slot + 1, nodes);
+        nodes[index].offset = nodes.len() as u32;
+        compact(built, node.offset as usize, nodes);
+    }
 }
 
 /// A flattened BVH. Primitives with invalid boxes (empty, NaN) are left out and
@@ -43,37 +57,28 @@ pub struct Bvh {
     depth: usize,
 }
 
-struct BuildItem {
-    bounds: Aabb,
-    centroid: [f64; 3],
-    index: u32,
-}
-
 impl Bvh {
     /// Builds the tree over `boxes`; leaf callbacks receive indices into `boxes`.
     pub fn build(boxes: &[Aabb]) -> Bvh {
-        let mut items: Vec<BuildItem> = boxes
+        let items: Vec<Item> = boxes
             .iter()
             .enumerate()
             .filter(|(_, b)| b.is_valid())
-            .map(|(i, b)| {
-                let c = b.centroid();
-                BuildItem {
-                    bounds: *b,
-                    centroid: [c.x, c.y, c.z],
-                    index: i as u32,
-                }
+            .map(|(i, b)| Item {
+                bounds: Bounds::from_aabb(b),
+                index: i as u32,
             })
             .collect();
-        let mut bvh = Bvh {
-            nodes: Vec::with_capacity(2 * items.len().max(1)),
-            indices: Vec::with_capacity(items.len()),
-            depth: 0,
-        };
-        if !items.is_empty() {
-            bvh.build_node(&mut items, 0);
+        let built = build::build(items, MAX_DEPTH);
+        let mut nodes = Vec::with_capacity(built.nodes.len());
+        if !built.nodes.is_empty() {
+            compact(&built.nodes, 0, &mut nodes);
         }
-        bvh
+        Bvh {
+            nodes,
+            indices: built.items.iter().map(|item| item.index).collect(),
+            depth: built.depth,
+        }
     }
 
     /// The same tree with leaf entries numbered in leaf order (entry `k` is
@@ -98,39 +103,6 @@ impl Bvh {
     /// Bounds of everything in the tree (empty box for an empty tree).
     pub fn bounds(&self) -> Aabb {
         self.nodes.first().map_or_else(Aabb::empty, |n| n.bounds)
-    }
-
-    fn build_node(&mut self, items: &mut [BuildItem], depth: usize) -> usize {
-        let bounds = items
-            .iter()
-            .fold(Aabb::empty(), |acc, item| acc.union(&item.bounds));
-        let node_index = self.nodes.len();
-        self.nodes.push(Node {
-            bounds,
-            offset: 0,
-            count: 0,
-        });
-        let split = if items.len() <= 1 || depth >= MAX_DEPTH {
-            None
-        } else {
-            choose_split(items, &bounds)
-        };
-        let Some(mid) = split else {
-            self.depth = self.depth.max(depth);
-            self.make_leaf(node_index, items);
-            return node_index;
-        };
-        let (left, right) = items.split_at_mut(mid);
-        self.build_node(left, depth + 1);
-        let second = self.build_node(right, depth + 1);
-        self.nodes[node_index].offset = second as u32;
-        node_index
-    }
-
-    fn make_leaf(&mut self, node_index: usize, items: &[BuildItem]) {
-        self.nodes[node_index].offset = self.indices.len() as u32;
-        self.nodes[node_index].count = items.len() as u32;
-        self.indices.extend(items.iter().map(|item| item.index));
     }
 
     /// Nearest-hit traversal. `leaf(index, t_max)` tests primitive `index` and
@@ -289,90 +261,6 @@ impl Bvh {
         }
         false
     }
-}
-
-/// Chooses a binned-SAH split and partitions `items`; returns the split position,
-/// or `None` when a leaf is cheaper.
-fn choose_split(items: &mut [BuildItem], bounds: &Aabb) -> Option<usize> {
-    let count = items.len();
-    let mut centroid_bounds = Aabb::empty();
-    for item in items.iter() {
-        centroid_bounds = centroid_bounds.include_point(item.centroid.into());
-    }
-    let extent = centroid_bounds.extent();
-    let parent_area = bounds.surface_area().max(f64::MIN_POSITIVE);
-    let mut best: Option<(usize, usize, f64)> = None; // (axis, bin boundary, cost)
-    for axis in 0..3 {
-        if extent[axis] <= 0.0 || !extent[axis].is_finite() {
-            continue;
-        }
-        let scale = BIN_COUNT as f64 / extent[axis];
-        let bin_of = |c: f64| -> usize {
-            (((c - centroid_bounds.min[axis]) * scale) as usize).min(BIN_COUNT - 1)
-        };
-        let mut bin_bounds = [Aabb::empty(); BIN_COUNT];
-        let mut bin_counts = [0usize; BIN_COUNT];
-        for item in items.iter() {
-            let b = bin_of(item.centroid[axis]);
-            bin_bounds[b] = bin_bounds[b].union(&item.bounds);
-            bin_counts[b] += 1;
-        }
-        // Sweep from the right to get suffix areas and counts.
-        let mut right_area = [0.0; BIN_COUNT];
-        let mut right_count = [0usize; BIN_COUNT];
-        let mut acc = Aabb::empty();
-        let mut n = 0;
-        for b in (1..BIN_COUNT).rev() {
-            acc = acc.union(&bin_bounds[b]);
-            n += bin_counts[b];
-            right_area[b] = acc.surface_area();
-            right_count[b] = n;
-        }
-        let mut acc = Aabb::empty();
-        let mut n = 0;
-        for b in 1..BIN_COUNT {
-            acc = acc.union(&bin_bounds[b - 1]);
-            n += bin_counts[b - 1];
-            if n == 0 || right_count[b] == 0 {
-                continue;
-            }
-            let cost = TRAVERSAL_COST
-                + (acc.surface_area() * n as f64 + right_area[b] * right_count[b] as f64)
-                    / parent_area;
-            if best.is_none_or(|(_, _, c)| cost < c) {
-                best = Some((axis, b, cost));
-            }
-        }
-    }
-    match best {
-        Some((axis, boundary, cost)) => {
-            if count <= MAX_LEAF_SIZE && cost >= count as f64 {
-                return None;
-            }
-            let scale = BIN_COUNT as f64 / extent[axis];
-            let min = centroid_bounds.min[axis];
-            let mid = partition(items, |item| {
-                ((((item.centroid[axis] - min) * scale) as usize).min(BIN_COUNT - 1)) < boundary
-            });
-            (mid > 0 && mid < count).then_some(mid)
-        }
-        None => {
-            // All centroids coincide: split by count so leaves stay small.
-            (count > MAX_LEAF_SIZE).then_some(count / 2)
-        }
-    }
-}
-
-/// Moves the items satisfying `left` to the front; returns how many there are.
-fn partition(items: &mut [BuildItem], left: impl Fn(&BuildItem) -> bool) -> usize {
-    let mut first = 0;
-    for i in 0..items.len() {
-        if left(&items[i]) {
-            items.swap(first, i);
-            first += 1;
-        }
-    }
-    first
 }
 
 #[cfg(test)]
