@@ -114,6 +114,7 @@ impl Item {
 pub(super) struct Built {
     pub nodes: Vec<BinaryNode>,
     pub items: Vec<Item>,
+    #[allow(dead_code)]
     pub depth: usize,
 }
 

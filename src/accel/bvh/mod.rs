@@ -1,60 +1,40 @@
-//! A bounding volume hierarchy over boxes: binned-SAH build, flat nodes, and
-//! allocation-free traversal (nearest hit with a shrinking `t_max`, and any hit).
+//! A bounding volume hierarchy over boxes: a parallel binned-SAH build of a
+//! binary tree (`build`), collapsed into 4-wide nodes with f32 boxes rounded
+//! outward (`wide`), and allocation-free traversal that tests four child
+//! boxes at once (nearest hit: nearest child first with a shrinking `t_max`;
+//! any hit: stops at the first).
 //!
 //! The BVH knows only boxes and their indices; callers keep the primitives and
 //! answer the leaf tests through a closure.
 
 mod build;
+mod ray4;
+mod wide;
 
-use crate::math::{Aabb, Ray, inverse_direction};
-use build::{BinaryNode, Bounds, Item};
+use crate::math::{Aabb, Ray};
+use build::{Bounds, Item};
+use ray4::{Entry, Ray4};
+use wide::Node4;
 
-/// Size of the largest traversal stack. The build never makes a tree deeper than
-/// this, so traversal cannot overflow it.
-const STACK_SIZE: usize = 64;
-/// Stack sizes for shallower trees: a traversal zeroes its whole stack, which
-/// for the 64 entries of a deep tree costs as much as a few box tests.
-const SMALL_STACK: usize = 8;
-const MEDIUM_STACK: usize = 32;
-/// Deepest level the build may create (leaves are forced below it).
-const MAX_DEPTH: usize = STACK_SIZE - 4;
-
-#[derive(Clone, Copy, Debug)]
-struct Node {
-    bounds: Aabb,
-    /// Interior: index of the second child (the first child follows the node).
-    /// Leaf: index of the first entry in `Bvh::indices`.
-    offset: u32,
-    /// Number of primitives; 0 for interior nodes.
-    count: u32,
-}
-
-/// Copies the subtree at `slot` of the built tree to `nodes` in depth-first
-/// order, without the gaps of the build.
-fn compact(built: &[BinaryNode], slot: usize, nodes: &mut Vec<Node>) {
-    let node = built[slot];
-    let index = nodes.len();
-    nodes.push(Node {
-        bounds: node.bounds.to_aabb(),
-        offset: node.offset,
-        count: node.count,
-    });
-    if node.count == 0 {
-        compact(built, slot + 1, nodes);
-        nodes[index].offset = nodes.len() as u32;
-        compact(built, node.offset as usize, nodes);
-    }
-}
+/// Deepest binary level the build may create (leaves are forced below it).
+const MAX_DEPTH: usize = 60;
+/// Traversal stack sizes: a node pushes at most 4 entries and pops one, so a
+/// tree of wide depth `d` needs at most `3 d + 4`. A traversal zeroes its
+/// whole stack, so shallow trees use a short one.
+const SMALL_STACK: usize = 16;
+const MEDIUM_STACK: usize = 64;
+const STACK_SIZE: usize = 3 * MAX_DEPTH + 4;
 
 /// A flattened BVH. Primitives with invalid boxes (empty, NaN) are left out and
 /// therefore never reported.
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
-    nodes: Vec<Node>,
+    nodes: Vec<Node4>,
     indices: Vec<u32>,
-    /// Levels below the root of the deepest leaf: a traversal stack of
-    /// `depth + 1` entries cannot overflow.
+    /// Levels of wide nodes below the root.
     depth: usize,
+    /// Exact bounds of everything in the tree.
+    bounds: Option<Aabb>,
 }
 
 impl Bvh {
@@ -70,14 +50,15 @@ impl Bvh {
             })
             .collect();
         let built = build::build(items, MAX_DEPTH);
-        let mut nodes = Vec::with_capacity(built.nodes.len());
-        if !built.nodes.is_empty() {
-            compact(&built.nodes, 0, &mut nodes);
+        if built.nodes.is_empty() {
+            return Bvh::default();
         }
+        let (nodes, depth) = wide::collapse(&built.nodes);
         Bvh {
             nodes,
             indices: built.items.iter().map(|item| item.index).collect(),
-            depth: built.depth,
+            depth,
+            bounds: Some(built.nodes[0].bounds.to_aabb()),
         }
     }
 
@@ -102,7 +83,7 @@ impl Bvh {
 
     /// Bounds of everything in the tree (empty box for an empty tree).
     pub fn bounds(&self) -> Aabb {
-        self.nodes.first().map_or_else(Aabb::empty, |n| n.bounds)
+        self.bounds.unwrap_or_else(Aabb::empty)
     }
 
     /// Nearest-hit traversal. `leaf(index, t_max)` tests primitive `index` and
@@ -113,16 +94,16 @@ impl Bvh {
     where
         F: FnMut(usize, f64) -> Option<f64>,
     {
-        if self.depth < SMALL_STACK {
+        if self.depth * 3 + 4 <= SMALL_STACK {
             self.traverse_with::<SMALL_STACK, F>(ray, t_min, t_max, leaf)
-        } else if self.depth < MEDIUM_STACK {
+        } else if self.depth * 3 + 4 <= MEDIUM_STACK {
             self.traverse_with::<MEDIUM_STACK, F>(ray, t_min, t_max, leaf)
         } else {
             self.traverse_with::<STACK_SIZE, F>(ray, t_min, t_max, leaf)
         }
     }
 
-    /// [`Bvh::traverse`] with a stack of `N > depth` entries.
+    /// [`Bvh::traverse`] with a stack of `N >= 3 depth + 4` entries.
     #[inline]
     fn traverse_with<const N: usize, F>(
         &self,
@@ -137,72 +118,52 @@ impl Bvh {
         if self.nodes.is_empty() {
             return t_max;
         }
-        let inverse = inverse_direction(&ray.direction);
-        let origin = ray.origin;
-        if self.nodes[0]
-            .bounds
-            .hit_distance(&origin, &inverse, t_min, t_max)
-            .is_none()
-        {
-            return t_max;
-        }
-        let mut stack = [(0u32, 0.0f64); N];
-        let mut top = 0usize;
-        let mut current = 0usize;
-        loop {
-            let node = &self.nodes[current];
-            if node.count > 0 {
-                let start = node.offset as usize;
-                for &index in &self.indices[start..start + node.count as usize] {
+        let r = Ray4::new(ray, t_min);
+        let mut limit = wide::round_up(t_max);
+        let mut stack = [Entry::default(); N];
+        stack[0] = Entry {
+            target: 0,
+            count: 0,
+            t: f32::NEG_INFINITY,
+        };
+        let mut top = 1usize;
+        while top > 0 {
+            top -= 1;
+            let entry = stack[top];
+            if entry.t > limit {
+                continue;
+            }
+            if entry.count > 0 {
+                let start = entry.target as usize;
+                for &index in &self.indices[start..start + entry.count as usize] {
                     if let Some(t) = leaf(index as usize, t_max) {
                         t_max = t_max.min(t);
+                        limit = wide::round_up(t_max);
                     }
                 }
-            } else {
-                let first = current + 1;
-                let second = node.offset as usize;
-                let hit_first = self.nodes[first]
-                    .bounds
-                    .hit_distance(&origin, &inverse, t_min, t_max);
-                let hit_second = self.nodes[second]
-                    .bounds
-                    .hit_distance(&origin, &inverse, t_min, t_max);
-                match (hit_first, hit_second) {
-                    (Some(a), Some(b)) => {
-                        let (near, far, far_t) = if a <= b {
-                            (first, second, b)
-                        } else {
-                            (second, first, a)
-                        };
-                        stack[top] = (far as u32, far_t);
-                        top += 1;
-                        current = near;
-                        continue;
-                    }
-                    (Some(_), None) => {
-                        current = first;
-                        continue;
-                    }
-                    (None, Some(_)) => {
-                        current = second;
-                        continue;
-                    }
-                    (None, None) => {}
-                }
+                continue;
             }
-            // Pop the next node that may still hold something nearer than t_max.
-            loop {
-                if top == 0 {
-                    return t_max;
-                }
-                top -= 1;
-                let (index, entry) = stack[top];
-                if entry <= t_max {
-                    current = index as usize;
-                    break;
+            let node = &self.nodes[entry.target as usize];
+            let (near, hit) = r.hit4(node, limit);
+            // Push the hit children farthest first, so the nearest is next.
+            let first = top;
+            for i in 0..4 {
+                if hit[i] {
+                    let mut k = top;
+                    while k > first && stack[k - 1].t < near[i] {
+                        stack[k] = stack[k - 1];
+                        k -= 1;
+                    }
+                    stack[k] = Entry {
+                        target: node.child[i],
+                        count: node.count[i],
+                        t: near[i],
+                    };
+                    top += 1;
                 }
             }
         }
+        t_max
     }
 
     /// Any-hit traversal: true as soon as `leaf(index)` reports a hit.
@@ -211,18 +172,16 @@ impl Bvh {
     where
         F: FnMut(usize) -> bool,
     {
-        // Pushing both children of each node on a path keeps at most
-        // `depth + 1` entries.
-        if self.depth < SMALL_STACK {
+        if self.depth * 3 + 4 <= SMALL_STACK {
             self.any_with::<SMALL_STACK, F>(ray, t_min, t_max, leaf)
-        } else if self.depth < MEDIUM_STACK {
+        } else if self.depth * 3 + 4 <= MEDIUM_STACK {
             self.any_with::<MEDIUM_STACK, F>(ray, t_min, t_max, leaf)
         } else {
             self.any_with::<STACK_SIZE, F>(ray, t_min, t_max, leaf)
         }
     }
 
-    /// [`Bvh::any`] with a stack of `N > depth` entries.
+    /// [`Bvh::any`] with a stack of `N >= 3 depth + 4` entries.
     #[inline]
     fn any_with<const N: usize, F>(&self, ray: &Ray, t_min: f64, t_max: f64, mut leaf: F) -> bool
     where
@@ -231,32 +190,26 @@ impl Bvh {
         if self.nodes.is_empty() {
             return false;
         }
-        let inverse = inverse_direction(&ray.direction);
-        let origin = ray.origin;
+        let r = Ray4::new(ray, t_min);
+        let limit = wide::round_up(t_max);
         let mut stack = [0u32; N];
         let mut top = 1usize;
         while top > 0 {
             top -= 1;
-            let current = stack[top] as usize;
-            let node = &self.nodes[current];
-            if node
-                .bounds
-                .hit_distance(&origin, &inverse, t_min, t_max)
-                .is_none()
-            {
-                continue;
-            }
-            if node.count > 0 {
-                let start = node.offset as usize;
-                for &index in &self.indices[start..start + node.count as usize] {
-                    if leaf(index as usize) {
-                        return true;
+            let node = &self.nodes[stack[top] as usize];
+            let (_, hit) = r.hit4(node, limit);
+            for (i, _) in hit.iter().enumerate().filter(|(_, hit)| **hit) {
+                if node.count[i] > 0 {
+                    let start = node.child[i] as usize;
+                    for &index in &self.indices[start..start + node.count[i] as usize] {
+                        if leaf(index as usize) {
+                            return true;
+                        }
                     }
+                } else {
+                    stack[top] = node.child[i];
+                    top += 1;
                 }
-            } else {
-                stack[top] = node.offset;
-                stack[top + 1] = current as u32 + 1;
-                top += 2;
             }
         }
         false

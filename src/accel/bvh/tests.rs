@@ -1,7 +1,7 @@
 //! Tests of the BVH: traversal against brute force, degenerate boxes, leaf order.
 
 use super::*;
-use crate::math::{Point3, Vec3};
+use crate::math::{Point3, Vec3, inverse_direction};
 use crate::rng::Rng;
 
 fn random_boxes(rng: &mut Rng, count: usize) -> Vec<Aabb> {
