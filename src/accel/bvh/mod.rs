@@ -11,7 +11,7 @@ mod build;
 mod ray4;
 mod wide;
 
-use crate::math::{Aabb, Ray};
+use crate::math::{Aabb, Ray, inverse_direction};
 use build::{Bounds, Item};
 use ray4::{Entry, Ray4};
 use wide::Node4;
@@ -86,6 +86,31 @@ impl Bvh {
         self.bounds.unwrap_or_else(Aabb::empty)
     }
 
+    /// Whether the ray may enter the exact (f64) bounds of the tree: most rays
+    /// of a scene miss most meshes, and this test is cheaper than preparing
+    /// the f32 ray and its stack.
+    #[inline]
+    fn may_hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        let Some(b) = &self.bounds else {
+            return false;
+        };
+        let inverse = inverse_direction(&ray.direction);
+        let (mut near, mut far) = (t_min, t_max);
+        for k in 0..3 {
+            let t0 = (b.min[k] - ray.origin[k]) * inverse[k];
+            let t1 = (b.max[k] - ray.origin[k]) * inverse[k];
+            // NaN: parallel to the axis with the origin on a face, inside.
+            if t0.is_nan() || t1.is_nan() {
+                continue;
+            }
+            near = near.max(t0.min(t1));
+            far = far.min(t0.max(t1));
+        }
+        // Grown by a few ulps for the rounding of the slab distances, so
+        // that a hit on a face or corner of the bounds is never lost.
+        near <= far + far.abs() * (4.0 * f64::EPSILON)
+    }
+
     /// Nearest-hit traversal. `leaf(index, t_max)` tests primitive `index` and
     /// returns the distance of a hit closer than `t_max`, which then becomes the
     /// new `t_max`. Returns the final `t_max` (unchanged if nothing was hit).
@@ -115,7 +140,7 @@ impl Bvh {
     where
         F: FnMut(usize, f64) -> Option<f64>,
     {
-        if self.nodes.is_empty() {
+        if !self.may_hit(ray, t_min, t_max) {
             return t_max;
         }
         let r = Ray4::new(ray, t_min);
@@ -187,7 +212,7 @@ impl Bvh {
     where
         F: FnMut(usize) -> bool,
     {
-        if self.nodes.is_empty() {
+        if !self.may_hit(ray, t_min, t_max) {
             return false;
         }
         let r = Ray4::new(ray, t_min);
