@@ -111,6 +111,22 @@ fn dragon(c: &mut Criterion) {
     group.finish();
     let world = World::build(&scene);
     bench_rays(c, "dragon_871k_incoherent", &world);
+    bench_any_hit(c, "dragon_871k_incoherent_any", &world);
+}
+
+/// The rays of [`bench_rays`] as shadow rays: any hit, unbounded.
+fn bench_any_hit(c: &mut Criterion, name: &str, world: &World) {
+    let rays = incoherent_rays(world, 100_000);
+    let mut group = c.benchmark_group("rays");
+    group.throughput(Throughput::Elements(rays.len() as u64));
+    group.bench_function(name, |b| {
+        b.iter(|| {
+            rays.iter()
+                .filter(|r| world.occluded(r, 0.0, f64::INFINITY))
+                .count()
+        })
+    });
+    group.finish();
 }
 
 fn primitives(c: &mut Criterion) {

@@ -1,7 +1,7 @@
 //! Tests of the BVH: traversal against brute force, degenerate boxes, leaf order.
 
 use super::*;
-use crate::math::{Point3, Vec3};
+use crate::math::{Point3, Vec3, inverse_direction};
 use crate::rng::Rng;
 
 fn random_boxes(rng: &mut Rng, count: usize) -> Vec<Aabb> {
@@ -100,4 +100,117 @@ fn identical_boxes_and_invalid_boxes() {
         None
     });
     assert_eq!(visited, 1000);
+}
+
+/// Random small triangles in a unit cube, a third of them sharing edges with
+/// their predecessor, and some in axis-aligned planes (flat boxes).
+fn random_triangles(rng: &mut Rng, count: usize) -> Vec<[Point3; 3]> {
+    let point = |rng: &mut Rng| Point3::new(rng.next_f64(), rng.next_f64(), rng.next_f64());
+    let mut triangles: Vec<[Point3; 3]> = Vec::new();
+    for i in 0..count {
+        let a = point(rng);
+        let mut t = [
+            a,
+            a + (point(rng) - Vec3::repeat(0.5)) * 0.2,
+            a + (point(rng) - Vec3::repeat(0.5)) * 0.2,
+        ];
+        if i % 3 == 1 {
+            let [p, q, _] = triangles[i - 1];
+            t = [q, p, t[2]];
+        }
+        if i % 5 == 0 {
+            let z = t[0].z;
+            t.iter_mut().for_each(|p| p.z = z);
+        }
+        triangles.push(t);
+    }
+    triangles
+}
+
+/// Rays towards random points, triangle vertices and edge points (grazing
+/// edges and the faces of flat boxes), some axis-parallel.
+fn random_ray(rng: &mut Rng, triangles: &[[Point3; 3]]) -> Ray {
+    let origin =
+        Point3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 3.0 - Vec3::repeat(1.0);
+    let t = triangles[(rng.next_f64() * triangles.len() as f64) as usize];
+    let s = rng.next_f64();
+    let target = match (rng.next_f64() * 4.0) as usize {
+        0 => t[0],
+        1 => t[0] + (t[1] - t[0]) * s,
+        2 => Point3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()),
+        _ => (t[0] + t[1] + t[2]) / 3.0,
+    };
+    let mut origin = origin;
+    if rng.next_f64() < 0.2 {
+        // Axis-parallel, in the plane of a flat triangle's box face.
+        origin = Point3::new(target.x, target.y, -1.0);
+        if rng.next_f64() < 0.5 {
+            origin = Point3::new(-1.0, target.y, t[0].z);
+        }
+    }
+    Ray::new(origin, target - origin, 0.0)
+}
+
+#[test]
+fn wide_traversal_finds_exactly_the_brute_force_nearest_triangle() {
+    use crate::geometry::triangle::intersect_vertices;
+    let mut rng = Rng::new(21, 22);
+    for count in [1, 5, 17, 2000] {
+        let triangles = random_triangles(&mut rng, count);
+        let boxes: Vec<Aabb> = triangles
+            .iter()
+            .map(|t| t.iter().fold(Aabb::empty(), |b, p| b.include_point(*p)))
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        let mut hits = 0;
+        for _ in 0..4000 {
+            let ray = random_ray(&mut rng, &triangles);
+            let t_max = if rng.next_f64() < 0.5 {
+                f64::INFINITY
+            } else {
+                2.0 * rng.next_f64()
+            };
+            let test = |i: usize, t_max: f64| {
+                let [a, b, c] = &triangles[i];
+                intersect_vertices(a, b, c, &ray, 0.0, t_max).map(|h| h.0)
+            };
+            let brute = (0..count)
+                .filter_map(|i| test(i, t_max))
+                .fold(f64::INFINITY, f64::min);
+            let found = bvh.traverse(&ray, 0.0, t_max, &test);
+            let expected = if brute.is_finite() { brute } else { t_max };
+            assert_eq!(found.to_bits(), expected.to_bits(), "{ray:?}");
+            let any = bvh.any(&ray, 0.0, t_max, |i| test(i, t_max).is_some());
+            assert_eq!(any, brute.is_finite());
+            hits += brute.is_finite() as usize;
+        }
+        assert!(hits > 500, "{hits} hits");
+    }
+}
+
+#[test]
+fn the_tree_is_the_same_for_any_thread_count() {
+    let mut rng = Rng::new(5, 6);
+    // Large enough for parallel subtrees and parallel binning.
+    let boxes = random_boxes(&mut rng, 40_000);
+    let build = |threads| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("pool");
+        pool.install(|| Bvh::build(&boxes))
+    };
+    let (one, three) = (build(1), build(3));
+    assert_eq!(one.indices, three.indices);
+    assert_eq!(one.nodes.len(), three.nodes.len());
+    for (a, b) in one.nodes.iter().zip(&three.nodes) {
+        assert_eq!((a.planes, a.child, a.count), (b.planes, b.child, b.count));
+    }
+}
+
+#[test]
+fn f32_boxes_contain_their_f64_boxes() {
+    for v in [0.1, -0.1, 1e-30, 3.0e38, 1.0, -7.3e5, 16_777_217.0] {
+        assert!(wide::round_down(v) as f64 <= v && v <= wide::round_up(v) as f64);
+    }
 }

@@ -1,0 +1,400 @@
+//! Binned-SAH build of the binary tree, in parallel.
+//!
+//! Each node is binned once on all three axes (box and centroid bounds per
+//! bin), so the children's bounds come from the bins and never from another
+//! pass over the items. Subtrees above [`PARALLEL_ITEMS`] are built with
+//! `rayon::join` and large nodes are binned in parallel chunks; the bins
+//! merge exactly (unions and counts), and every subtree writes into its own
+//! range of the node array (a subtree over `n` items owns `2n - 1` slots:
+//! the node, then its first child's range, then its second's), so the tree is
+//! the same for any number of threads. Unused slots stay as gaps.
+
+use crate::math::Aabb;
+
+/// Number of SAH bins per axis.
+const BIN_COUNT: usize = 16;
+/// Leaves at most this large are accepted when the SAH says so.
+pub(super) const MAX_LEAF_SIZE: usize = 4;
+/// Cost of visiting an interior node relative to one primitive test.
+const TRAVERSAL_COST: f64 = 1.0;
+/// Subtrees over more items than this build their children in parallel.
+const PARALLEL_ITEMS: usize = 4096;
+/// Nodes over more items than this are binned in parallel chunks of this size.
+const PARALLEL_BINNING: usize = 32 * 1024;
+
+/// A node of the binary tree.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct BinaryNode {
+    pub bounds: Bounds,
+    /// Interior: slot of the second child (the first child follows the node).
+    /// Leaf: index of the first item.
+    pub offset: u32,
+    /// Number of items; 0 for interior nodes.
+    pub count: u32,
+}
+
+/// A box as the build handles it: plain arrays, so that unions compile to
+/// packed min/max (the inputs are finite).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Bounds {
+    pub min: [f64; 3],
+    pub max: [f64; 3],
+}
+
+impl Bounds {
+    pub const EMPTY: Bounds = Bounds {
+        min: [f64::INFINITY; 3],
+        max: [f64::NEG_INFINITY; 3],
+    };
+
+    pub fn from_aabb(b: &Aabb) -> Bounds {
+        Bounds {
+            min: [b.min.x, b.min.y, b.min.z],
+            max: [b.max.x, b.max.y, b.max.z],
+        }
+    }
+
+    pub fn to_aabb(self) -> Aabb {
+        Aabb {
+            min: self.min.into(),
+            max: self.max.into(),
+        }
+    }
+
+    #[inline]
+    fn union(&self, other: &Bounds) -> Bounds {
+        Bounds {
+            min: [0, 1, 2].map(|k| lesser(self.min[k], other.min[k])),
+            max: [0, 1, 2].map(|k| greater(self.max[k], other.max[k])),
+        }
+    }
+
+    #[inline]
+    fn include(&self, p: &[f64; 3]) -> Bounds {
+        Bounds {
+            min: [0, 1, 2].map(|k| lesser(self.min[k], p[k])),
+            max: [0, 1, 2].map(|k| greater(self.max[k], p[k])),
+        }
+    }
+
+    fn surface_area(&self) -> f64 {
+        let e = [0, 1, 2].map(|k| self.max[k] - self.min[k]);
+        if e.iter().any(|&e| e < 0.0) {
+            return 0.0;
+        }
+        2.0 * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0])
+    }
+}
+
+#[inline]
+fn lesser(a: f64, b: f64) -> f64 {
+    if a < b { a } else { b }
+}
+
+#[inline]
+fn greater(a: f64, b: f64) -> f64 {
+    if a > b { a } else { b }
+}
+
+#[derive(Clone, Copy)]
+pub(super) struct Item {
+    pub bounds: Bounds,
+    pub index: u32,
+}
+
+impl Item {
+    #[inline]
+    fn centroid(&self) -> [f64; 3] {
+        [0, 1, 2].map(|k| (self.bounds.min[k] + self.bounds.max[k]) * 0.5)
+    }
+}
+
+/// The built tree: node slots (root at 0), items in leaf order, and the
+/// depth of the deepest leaf.
+pub(super) struct Built {
+    pub nodes: Vec<BinaryNode>,
+    pub items: Vec<Item>,
+    #[allow(dead_code)]
+    pub depth: usize,
+}
+
+/// What a node knows about its items before it is split.
+#[derive(Clone, Copy)]
+struct Range {
+    bounds: Bounds,
+    centroids: Bounds,
+    /// Position of the first item in the whole item array.
+    first: u32,
+}
+
+/// Builds the tree over `items` (all with valid boxes); `max_depth` forces leaves.
+pub(super) fn build(mut items: Vec<Item>, max_depth: usize) -> Built {
+    if items.is_empty() {
+        return Built {
+            nodes: Vec::new(),
+            items,
+            depth: 0,
+        };
+    }
+    let empty = BinaryNode {
+        bounds: Bounds::EMPTY,
+        offset: 0,
+        count: 0,
+    };
+    let mut nodes = vec![empty; 2 * items.len() - 1];
+    let range = bounds_of(&items, 0);
+    let depth = build_node(&mut items, &mut nodes, 0, range, 0, max_depth);
+    Built {
+        nodes,
+        items,
+        depth,
+    }
+}
+
+fn bounds_of(items: &[Item], first: u32) -> Range {
+    let (bounds, centroids) = items
+        .iter()
+        .fold((Bounds::EMPTY, Bounds::EMPTY), |(b, c), item| {
+            (b.union(&item.bounds), c.include(&item.centroid()))
+        });
+    Range {
+        bounds,
+        centroids,
+        first,
+    }
+}
+
+/// Builds the subtree over `items` into `nodes` (its own `2n - 1` slots,
+/// the first at absolute slot `slot`); returns the depth of its deepest leaf.
+fn build_node(
+    items: &mut [Item],
+    nodes: &mut [BinaryNode],
+    slot: u32,
+    range: Range,
+    depth: usize,
+    max_depth: usize,
+) -> usize {
+    nodes[0].bounds = range.bounds;
+    let split = if items.len() <= 1 || depth >= max_depth {
+        None
+    } else {
+        choose_split(items, &range)
+    };
+    let Some((mid, left, right)) = split else {
+        nodes[0].offset = range.first;
+        nodes[0].count = items.len() as u32;
+        return depth;
+    };
+    let second = slot + 2 * mid as u32;
+    nodes[0].offset = second;
+    nodes[0].count = 0;
+    let (left_nodes, right_nodes) = nodes[1..].split_at_mut(2 * mid - 1);
+    let (left_items, right_items) = items.split_at_mut(mid);
+    let left = Range {
+        first: range.first,
+        ..left
+    };
+    let right = Range {
+        first: range.first + mid as u32,
+        ..right
+    };
+    let parallel = left_items.len() + right_items.len() > PARALLEL_ITEMS;
+    let mut left_job = || build_node(left_items, left_nodes, slot + 1, left, depth + 1, max_depth);
+    let mut right_job = || {
+        build_node(
+            right_items,
+            right_nodes,
+            second,
+            right,
+            depth + 1,
+            max_depth,
+        )
+    };
+    let (a, b) = if parallel {
+        rayon::join(left_job, right_job)
+    } else {
+        (left_job(), right_job())
+    };
+    a.max(b)
+}
+
+/// Box bounds and count of the items of one bin, per axis.
+#[derive(Clone, Copy)]
+struct Bins {
+    bounds: [[Bounds; BIN_COUNT]; 3],
+    counts: [[u32; BIN_COUNT]; 3],
+}
+
+impl Bins {
+    fn new() -> Bins {
+        Bins {
+            bounds: [[Bounds::EMPTY; BIN_COUNT]; 3],
+            counts: [[0; BIN_COUNT]; 3],
+        }
+    }
+
+    fn merge(mut self, other: Bins) -> Bins {
+        for axis in 0..3 {
+            for b in 0..BIN_COUNT {
+                self.bounds[axis][b] = self.bounds[axis][b].union(&other.bounds[axis][b]);
+                self.counts[axis][b] += other.counts[axis][b];
+            }
+        }
+        self
+    }
+}
+
+/// Maps centroids to bins along each axis (scale 0 for a flat axis, which
+/// puts everything in bin 0). Nodes of few items use as many bins as items.
+struct Binning {
+    min: [f64; 3],
+    scale: [f64; 3],
+    bins: usize,
+}
+
+impl Binning {
+    fn new(centroids: &Bounds, count: usize) -> Binning {
+        let bins = count.clamp(2, BIN_COUNT);
+        let scale = [0, 1, 2].map(|axis| {
+            let extent = centroids.max[axis] - centroids.min[axis];
+            if extent > 0.0 && extent.is_finite() {
+                bins as f64 / extent
+            } else {
+                0.0
+            }
+        });
+        Binning {
+            min: centroids.min,
+            scale,
+            bins,
+        }
+    }
+
+    #[inline]
+    fn bin(&self, axis: usize, c: f64) -> usize {
+        (((c - self.min[axis]) * self.scale[axis]) as usize).min(self.bins - 1)
+    }
+
+    fn fill(&self, items: &[Item], bins: &mut Bins) {
+        for item in items {
+            let c = item.centroid();
+            for (axis, &c) in c.iter().enumerate() {
+                let b = self.bin(axis, c);
+                bins.bounds[axis][b] = bins.bounds[axis][b].union(&item.bounds);
+                bins.counts[axis][b] += 1;
+            }
+        }
+    }
+
+    /// [`Binning::fill`] over chunks in parallel for large nodes; the merge
+    /// is exact, so the bins do not depend on the chunking.
+    fn fill_parallel(&self, items: &[Item], bins: &mut Bins) {
+        use rayon::prelude::*;
+        if items.len() <= PARALLEL_BINNING {
+            self.fill(items, bins);
+            return;
+        }
+        *bins = items
+            .par_chunks(PARALLEL_BINNING)
+            .map(|chunk| {
+                let mut bins = Bins::new();
+                self.fill(chunk, &mut bins);
+                bins
+            })
+            .reduce(Bins::new, Bins::merge);
+    }
+}
+
+/// Chooses a binned-SAH split and partitions `items`; returns the split
+/// position and what both sides know, or `None` when a leaf is cheaper.
+fn choose_split(items: &mut [Item], range: &Range) -> Option<(usize, Range, Range)> {
+    let count = items.len();
+    let binning = Binning::new(&range.centroids, count);
+    let used = binning.bins;
+    let parent_area = range.bounds.surface_area().max(f64::MIN_POSITIVE);
+    let mut bins = Bins::new();
+    binning.fill_parallel(items, &mut bins);
+    let mut best: Option<(usize, usize, f64)> = None; // (axis, bin boundary, cost)
+    for axis in 0..3 {
+        if binning.scale[axis] == 0.0 {
+            continue;
+        }
+        let (bounds, counts) = (&bins.bounds[axis], &bins.counts[axis]);
+        // Sweep from the right to get suffix areas and counts.
+        let mut right_area = [0.0; BIN_COUNT];
+        let mut right_count = [0u32; BIN_COUNT];
+        let mut acc = Bounds::EMPTY;
+        let mut n = 0;
+        for b in (1..used).rev() {
+            acc = acc.union(&bounds[b]);
+            n += counts[b];
+            right_area[b] = acc.surface_area();
+            right_count[b] = n;
+        }
+        let mut acc = Bounds::EMPTY;
+        let mut n = 0;
+        for b in 1..used {
+            acc = acc.union(&bounds[b - 1]);
+            n += counts[b - 1];
+            if n == 0 || right_count[b] == 0 {
+                continue;
+            }
+            let cost = TRAVERSAL_COST
+                + (acc.surface_area() * n as f64 + right_area[b] * right_count[b] as f64)
+                    / parent_area;
+            if best.is_none_or(|(_, _, c)| cost < c) {
+                best = Some((axis, b, cost));
+            }
+        }
+    }
+    let Some((axis, boundary, cost)) = best else {
+        // All centroids coincide: split by count so leaves stay small.
+        return (count > MAX_LEAF_SIZE).then(|| {
+            let mid = count / 2;
+            (
+                mid,
+                bounds_of(&items[..mid], 0),
+                bounds_of(&items[mid..], 0),
+            )
+        });
+    };
+    if count <= MAX_LEAF_SIZE && cost >= count as f64 {
+        return None;
+    }
+    let (mid, left_centroids, right_centroids) = partition(items, &binning, axis, boundary);
+    let side = |bins: &[Bounds]| bins.iter().fold(Bounds::EMPTY, |a, b| a.union(b));
+    let left = Range {
+        bounds: side(&bins.bounds[axis][..boundary]),
+        centroids: left_centroids,
+        first: 0,
+    };
+    let right = Range {
+        bounds: side(&bins.bounds[axis][boundary..used]),
+        centroids: right_centroids,
+        first: 0,
+    };
+    (mid > 0 && mid < count).then_some((mid, left, right))
+}
+
+/// Moves the items of the bins below `boundary` to the front; returns how
+/// many there are and the centroid bounds of both sides.
+fn partition(
+    items: &mut [Item],
+    binning: &Binning,
+    axis: usize,
+    boundary: usize,
+) -> (usize, Bounds, Bounds) {
+    let mut first = 0;
+    let (mut left, mut right) = (Bounds::EMPTY, Bounds::EMPTY);
+    for i in 0..items.len() {
+        let c = items[i].centroid();
+        if binning.bin(axis, c[axis]) < boundary {
+            left = left.include(&c);
+            items.swap(first, i);
+            first += 1;
+        } else {
+            right = right.include(&c);
+        }
+    }
+    (first, left, right)
+}
