@@ -6,13 +6,15 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::Duration;
 
+mod common;
+
+use common::{incoherent_rays, load_obj};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use pathtracer::integrator::Integrator;
-use pathtracer::math::{Ray, Vec3};
+use pathtracer::math::Vec3;
 use pathtracer::render::{RenderSettings, render};
-use pathtracer::rng::Rng;
 use pathtracer::sampler::SamplerKind;
-use pathtracer::scene::model::{CurveKind, Material, MeshData, Object, Profile, Scene};
+use pathtracer::scene::model::{CurveKind, Material, Object, Profile, Scene};
 use pathtracer::scene::{LoadOptions, load_scene};
 use pathtracer::world::World;
 
@@ -30,53 +32,6 @@ fn shared(relative: &str) -> Option<PathBuf> {
 
 fn scene_with(root: Object) -> Scene {
     Scene::new(vec![Material::default()], root)
-}
-
-fn load_obj(path: &Path) -> MeshData {
-    let options = tobj::LoadOptions {
-        triangulate: true,
-        single_index: true,
-        ..Default::default()
-    };
-    let (models, _) = tobj::load_obj(path, &options).expect("reference mesh loads");
-    let mut mesh = MeshData::default();
-    for model in models {
-        let base = mesh.positions.len() as u32;
-        let m = model.mesh;
-        for p in m.positions.chunks_exact(3) {
-            mesh.positions
-                .push(Vec3::new(p[0] as f64, p[1] as f64, p[2] as f64));
-        }
-        for t in m.indices.chunks_exact(3) {
-            mesh.triangles.push([base + t[0], base + t[1], base + t[2]]);
-        }
-    }
-    mesh
-}
-
-/// Rays from random points on a sphere around the world towards random
-/// points inside its bounds: incoherent, and most of them hit.
-fn incoherent_rays(world: &World, count: usize) -> Vec<Ray> {
-    let bounds = world.bounds();
-    let center = bounds.centroid();
-    let radius = bounds.extent().norm();
-    let mut rng = Rng::new(11, 13);
-    (0..count)
-        .map(|_| {
-            let z = 2.0 * rng.next_f64() - 1.0;
-            let phi = 2.0 * std::f64::consts::PI * rng.next_f64();
-            let s = (1.0 - z * z).sqrt();
-            let origin = center + Vec3::new(s * phi.cos(), s * phi.sin(), z) * radius;
-            let e = bounds.extent();
-            let target = bounds.min
-                + Vec3::new(
-                    e.x * rng.next_f64(),
-                    e.y * rng.next_f64(),
-                    e.z * rng.next_f64(),
-                );
-            Ray::new(origin, (target - origin).normalize(), 0.0)
-        })
-        .collect()
 }
 
 fn bench_rays(c: &mut Criterion, name: &str, world: &World) {

@@ -5,59 +5,16 @@
 //!
 //! `cargo run --release --example dragon_rays -- [mesh.obj] [rays] [closest|any|both|build]`
 
+#[path = "../benches/common/mod.rs"]
+mod common;
+
 use std::sync::Arc;
 use std::time::Instant;
 
-use pathtracer::math::{Ray, Vec3};
-use pathtracer::rng::Rng;
-use pathtracer::scene::model::{Material, MeshData, Object, Scene};
+use common::{incoherent_rays, load_obj};
+
+use pathtracer::scene::model::{Material, Object, Scene};
 use pathtracer::world::World;
-
-fn load_obj(path: &str) -> MeshData {
-    let options = tobj::LoadOptions {
-        triangulate: true,
-        single_index: true,
-        ..Default::default()
-    };
-    let (models, _) = tobj::load_obj(path, &options).expect("mesh loads");
-    let mut mesh = MeshData::default();
-    for model in models {
-        let base = mesh.positions.len() as u32;
-        let m = model.mesh;
-        for p in m.positions.chunks_exact(3) {
-            mesh.positions
-                .push(Vec3::new(p[0] as f64, p[1] as f64, p[2] as f64));
-        }
-        for t in m.indices.chunks_exact(3) {
-            mesh.triangles.push([base + t[0], base + t[1], base + t[2]]);
-        }
-    }
-    mesh
-}
-
-/// The ray set of the `rays/` benchmarks.
-fn incoherent_rays(world: &World, count: usize) -> Vec<Ray> {
-    let bounds = world.bounds();
-    let center = bounds.centroid();
-    let radius = bounds.extent().norm();
-    let mut rng = Rng::new(11, 13);
-    (0..count)
-        .map(|_| {
-            let z = 2.0 * rng.next_f64() - 1.0;
-            let phi = 2.0 * std::f64::consts::PI * rng.next_f64();
-            let s = (1.0 - z * z).sqrt();
-            let origin = center + Vec3::new(s * phi.cos(), s * phi.sin(), z) * radius;
-            let e = bounds.extent();
-            let target = bounds.min
-                + Vec3::new(
-                    e.x * rng.next_f64(),
-                    e.y * rng.next_f64(),
-                    e.z * rng.next_f64(),
-                );
-            Ray::new(origin, (target - origin).normalize(), 0.0)
-        })
-        .collect()
-}
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -71,7 +28,7 @@ fn main() {
     let scene = Scene::new(
         vec![Material::default()],
         Object::Mesh {
-            mesh: Arc::new(load_obj(path)),
+            mesh: Arc::new(load_obj(std::path::Path::new(path))),
             smooth: false,
             material: 0,
             face_materials: None,
