@@ -11,7 +11,7 @@ mod common;
 use common::{incoherent_rays, load_obj};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use pathtracer::integrator::Integrator;
-use pathtracer::math::Vec3;
+use pathtracer::math::{Ray, Vec3};
 use pathtracer::render::{RenderSettings, render};
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{CurveKind, Material, Object, Profile, Scene};
@@ -34,16 +34,25 @@ fn scene_with(root: Object) -> Scene {
     Scene::new(vec![Material::default()], root)
 }
 
+/// Closest hits of the incoherent ray set through `world`.
 fn bench_rays(c: &mut Criterion, name: &str, world: &World) {
+    bench_query(c, name, world, |r| {
+        world.intersect(r, 0.0, f64::INFINITY).is_some()
+    });
+}
+
+/// The rays of [`bench_rays`] as shadow rays: any hit, unbounded.
+fn bench_any_hit(c: &mut Criterion, name: &str, world: &World) {
+    bench_query(c, name, world, |r| world.occluded(r, 0.0, f64::INFINITY));
+}
+
+/// `query` over the incoherent ray set, in rays per second.
+fn bench_query(c: &mut Criterion, name: &str, world: &World, query: impl Fn(&Ray) -> bool) {
     let rays = incoherent_rays(world, 100_000);
     let mut group = c.benchmark_group("rays");
     group.throughput(Throughput::Elements(rays.len() as u64));
     group.bench_function(name, |b| {
-        b.iter(|| {
-            rays.iter()
-                .filter(|r| world.intersect(r, 0.0, f64::INFINITY).is_some())
-                .count()
-        })
+        b.iter(|| rays.iter().filter(|r| query(r)).count())
     });
     group.finish();
 }
@@ -67,21 +76,6 @@ fn dragon(c: &mut Criterion) {
     let world = World::build(&scene);
     bench_rays(c, "dragon_871k_incoherent", &world);
     bench_any_hit(c, "dragon_871k_incoherent_any", &world);
-}
-
-/// The rays of [`bench_rays`] as shadow rays: any hit, unbounded.
-fn bench_any_hit(c: &mut Criterion, name: &str, world: &World) {
-    let rays = incoherent_rays(world, 100_000);
-    let mut group = c.benchmark_group("rays");
-    group.throughput(Throughput::Elements(rays.len() as u64));
-    group.bench_function(name, |b| {
-        b.iter(|| {
-            rays.iter()
-                .filter(|r| world.occluded(r, 0.0, f64::INFINITY))
-                .count()
-        })
-    });
-    group.finish();
 }
 
 fn primitives(c: &mut Criterion) {

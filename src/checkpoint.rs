@@ -51,6 +51,15 @@ pub struct CheckpointStats {
 }
 
 impl Checkpoints {
+    /// What the render still takes: every pixel from its next sample up to
+    /// the header's sample count.
+    pub fn samples(&self) -> Samples {
+        Samples::Continue {
+            first: 0,
+            end: self.header.samples.end,
+        }
+    }
+
     /// Writes `film` as the checkpoint (replacing the previous one at once).
     pub fn write(&self, film: &Film, stats: &mut CheckpointStats) -> Result<(), String> {
         let start = Instant::now();
@@ -117,10 +126,7 @@ pub fn render_resumable(
     film: &mut Film,
     checkpoints: &Checkpoints,
 ) -> Result<(RenderStats, CheckpointStats), String> {
-    let samples = Samples::Continue {
-        first: 0,
-        end: checkpoints.header.samples.end,
-    };
+    let samples = checkpoints.samples();
     let mut total = RenderStats::default();
     let mut written = CheckpointStats::default();
     loop {

@@ -15,7 +15,7 @@ use pathtracer::image_io::{
 };
 use pathtracer::integrator::{Integrator, SceneView};
 use pathtracer::interrupt;
-use pathtracer::render::{Progress, RenderSettings, Renderer, Samples, SamplingPlan};
+use pathtracer::render::{Progress, RenderSettings, Renderer, SamplingPlan};
 use pathtracer::render_job::{Crop, JobHeader};
 use pathtracer::scene::model::Scene;
 use pathtracer::world::World;
@@ -168,10 +168,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         let stats = render_adaptive(&renderer, rule, &mut film)?;
         (stats, CheckpointStats::default())
     } else {
-        let samples = Samples::Continue {
-            first: 0,
-            end: settings.spp,
-        };
+        let samples = checkpoints.samples();
         let renderer = Renderer::new(
             &scene,
             &world,
