@@ -123,21 +123,34 @@ impl Aabb {
         t_min: f64,
         t_max: f64,
     ) -> Option<(f64, f64)> {
+        let (near, far) = self.slabs(origin, inverse_direction, t_min, t_max);
+        if near <= far { Some((near, far)) } else { None }
+    }
+
+    /// The ray's parameter interval inside the box's three slabs and
+    /// `(t_min, t_max)`, empty when `near > far`. A ray parallel to an axis
+    /// with its origin on one of the box's faces there (`0 * inf`, NaN)
+    /// lies in that slab for every `t`.
+    #[inline]
+    pub fn slabs(
+        &self,
+        origin: &Point3,
+        inverse_direction: &Vec3,
+        t_min: f64,
+        t_max: f64,
+    ) -> (f64, f64) {
         let mut near = t_min;
         let mut far = t_max;
         for axis in 0..3 {
             let t0 = (self.min[axis] - origin[axis]) * inverse_direction[axis];
             let t1 = (self.max[axis] - origin[axis]) * inverse_direction[axis];
-            let (lo, hi) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
-            // NaN (0 * inf) comparisons fall through and keep the previous bound.
-            if lo > near {
-                near = lo;
+            if t0.is_nan() || t1.is_nan() {
+                continue;
             }
-            if hi < far {
-                far = hi;
-            }
+            near = near.max(t0.min(t1));
+            far = far.min(t0.max(t1));
         }
-        if near <= far { Some((near, far)) } else { None }
+        (near, far)
     }
 
     /// The box grown by `margin` on every side.
@@ -210,4 +223,28 @@ pub fn orthonormal_basis(n: &Vec3) -> (Vec3, Vec3) {
         Vec3::new(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x),
         Vec3::new(b, sign + n.y * n.y * a, -n.y),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_ray_along_a_face_of_a_box_is_inside_that_slab() {
+        let unit = Aabb {
+            min: Point3::new(0.0, 0.0, 0.0),
+            max: Point3::new(1.0, 1.0, 1.0),
+        };
+        // Along x, in the plane of the face y = 0: 0 * inf is NaN there.
+        let origin = Point3::new(-1.0, 0.0, 0.5);
+        let inverse = inverse_direction(&Vec3::new(1.0, 0.0, 0.0));
+        assert_eq!(
+            unit.clip(&origin, &inverse, 0.0, f64::INFINITY),
+            Some((1.0, 2.0))
+        );
+        // Parallel to y but beside the box: outside for every t.
+        let beside = Point3::new(2.0, -1.0, 0.5);
+        let up = inverse_direction(&Vec3::new(0.0, 1.0, 0.0));
+        assert_eq!(unit.clip(&beside, &up, 0.0, f64::INFINITY), None);
+    }
 }

@@ -94,18 +94,12 @@ impl Bvh {
         let Some(b) = &self.bounds else {
             return false;
         };
-        let inverse = inverse_direction(&ray.direction);
-        let (mut near, mut far) = (t_min, t_max);
-        for k in 0..3 {
-            let t0 = (b.min[k] - ray.origin[k]) * inverse[k];
-            let t1 = (b.max[k] - ray.origin[k]) * inverse[k];
-            // NaN: parallel to the axis with the origin on a face, inside.
-            if t0.is_nan() || t1.is_nan() {
-                continue;
-            }
-            near = near.max(t0.min(t1));
-            far = far.min(t0.max(t1));
-        }
+        let (near, far) = b.slabs(
+            &ray.origin,
+            &inverse_direction(&ray.direction),
+            t_min,
+            t_max,
+        );
         // Grown by a few ulps for the rounding of the slab distances, so
         // that a hit on a face or corner of the bounds is never lost.
         near <= far + far.abs() * (4.0 * f64::EPSILON)
