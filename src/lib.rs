@@ -42,6 +42,7 @@ pub mod shading;
 pub mod subpixel;
 pub mod surface_maps;
 pub mod texture;
+pub mod texture_frames;
 pub mod trig;
 pub mod uv_rule;
 pub mod world;

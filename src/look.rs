@@ -10,7 +10,7 @@
 //! | `original` | the ported renderer (canonical dialect) | path tracing | 5 | background for camera rays | when the scene has no emitter | yes | Schlick |
 //! | `physical` | this project's physically based rendering | path tracing | 5 | background, weighted, at every depth | when the scene has no emitter | yes | exact Fresnel |
 //! | `pa1` | the course framework's ray caster (Achazwl, aliezlo `rc`, Cambrian's first renders) | ray casting: Phong per light, no shadows, pixel centres | 1 | background | always | the framework's | none |
-//! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick; texels times the colour |
+//! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick; texels times the colour, its texture frames |
 //! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing | 15 hits | background, unweighted, at every depth | never | no | Schlick; planes one-sided |
 //! | `osb` | one-step-beh1nd | path tracing | unlimited (roulette) | black | never | no | reflect with 0.25 + R/2, unweighted |
 //! | `ylc` | ylc2001 | path tracing | unlimited (roulette) | background, unweighted | never | no | Schlick |
@@ -84,6 +84,16 @@ pub enum TextureRows {
     Down,
 }
 
+/// How a textured shape's uv reach its image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TextureFrames {
+    /// Our shapes' uv, the image stretched over them.
+    Shapes,
+    /// Cambrian's: sphere longitudes from -z and rectangles that cut the
+    /// image instead of stretching it (see [`crate::texture_frames`]).
+    Cambrian,
+}
+
 /// One look's conventions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Look {
@@ -111,6 +121,7 @@ pub struct Look {
     /// The image axis an `angle` spans, when the renderer decides it rather
     /// than the dialect (yuzc19's is horizontal).
     pub fov_axis: Option<FovAxis>,
+    pub texture_frames: TextureFrames,
 }
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -132,6 +143,7 @@ impl Look {
         texture_times_color: false,
         texture_rows: TextureRows::Up,
         fov_axis: None,
+        texture_frames: TextureFrames::Shapes,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -160,6 +172,7 @@ impl Look {
         point_lights: PointLights::Never,
         phong_lobes: false,
         texture_times_color: true,
+        texture_frames: TextureFrames::Cambrian,
         ..Look::ORIGINAL
     };
 
@@ -238,8 +251,12 @@ impl Look {
     }
 
     /// Makes `scene` read as this look reads it where that is a property
-    /// of the scene's data: textures upside down for [`TextureRows::Down`].
+    /// of the scene's data: textures upside down for [`TextureRows::Down`],
+    /// rewritten for [`TextureFrames::Cambrian`].
     pub fn adapt(&self, scene: &mut Scene) {
+        if self.texture_frames == TextureFrames::Cambrian {
+            crate::texture_frames::apply_cambrian(scene);
+        }
         if self.texture_rows == TextureRows::Down {
             scene
                 .textures

@@ -14,6 +14,7 @@ use clap::Args;
 use pathtracer::image_io::{
     DisplayImage, PendingFile, commit_together, read_image_encoded, refuse_inputs, write_image,
 };
+use pathtracer::look::Look;
 use pathtracer::metrics::resample::box_resize;
 use pathtracer::pairs::measure::measure;
 use pathtracer::pairs::report::{Figures, Row, RunDescription, csv, html, summary};
@@ -43,6 +44,13 @@ pub struct LookalikeArgs {
     /// Render threads (default: one per core); pairs render one after another.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     jobs: Option<u32>,
+    /// Render every pair with this look instead of the detected one (to
+    /// see whether another renderer's conventions fit a folder better).
+    #[arg(long, value_parser = super::parse_look)]
+    look: Option<Look>,
+    /// Only the pairs whose folder contains this text.
+    #[arg(long)]
+    folder: Option<String>,
 }
 
 pub fn run(args: &LookalikeArgs) -> Result<(), String> {
@@ -54,7 +62,18 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
     let pairs: Vec<Pair> = read_pairs(&args.pairs)?
         .into_iter()
         .filter(|p| args.only == "all" || p.confidence == Confidence::Ok)
+        .filter(|p| {
+            args.folder
+                .as_ref()
+                .is_none_or(|f| p.folder.contains(f.as_str()))
+        })
         .collect();
+    if pairs.is_empty() {
+        return Err(format!(
+            "{}: no pair is selected by --only and --folder",
+            args.pairs.display()
+        ));
+    }
     // The page and the table are reserved before any pair is rendered.
     let mut csv_file = PendingFile::reserve(&args.out.join("lookalike.csv"))?;
     let index = args.out.join("index.html");
@@ -68,6 +87,7 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
         .map_err(|e| format!("{}: cannot create directory: {e}", images.display()))?;
     let mut sampling = SamplingOptions::defaults()?;
     sampling.threads = args.jobs;
+    sampling.look = args.look;
     let started = Instant::now();
     let mut slugs = HashSet::new();
     let mut rows = Vec::with_capacity(pairs.len());

@@ -263,7 +263,7 @@ impl SamplingOptions {
     }
 }
 
-fn parse_look(name: &str) -> Result<Look, String> {
+pub(crate) fn parse_look(name: &str) -> Result<Look, String> {
     Look::from_name(name).ok_or_else(|| {
         let names: Vec<&str> = Look::ALL.iter().map(|l| l.name).collect();
         format!("unknown look '{name}' (one of: {})", names.join(", "))
