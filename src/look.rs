@@ -38,6 +38,24 @@ pub enum Estimator {
     /// and directional light, `kd max(0, n.l) + ks max(0, v.r)^shininess`,
     /// no shadows, nothing else.
     RayCasting,
+    /// Path tracing by BSDF sampling alone (the original estimator), for
+    /// looks whose conventions next-event estimation cannot reproduce: rays
+    /// that re-hit the surface they leave.
+    BsdfSampling,
+}
+
+/// Where a ray that leaves a surface starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RayOrigins {
+    /// Off the surface along the geometric normal, so that the ray cannot
+    /// find the surface it leaves (ours).
+    Offset,
+    /// At the hit point itself, with no distance kept (W-Solaris's: a ray
+    /// leaving a sphere or a triangle finds the same surface again at
+    /// distance ~0 about half the time, by rounding, and scatters there
+    /// again; inside an emitting mirror sphere it collects the emission at
+    /// every bounce).
+    AtHit,
 }
 
 /// What a ray that hits nothing brings back.
@@ -122,6 +140,7 @@ pub struct Look {
     /// than the dialect (yuzc19's is horizontal).
     pub fov_axis: Option<FovAxis>,
     pub texture_frames: TextureFrames,
+    pub ray_origins: RayOrigins,
 }
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -144,6 +163,7 @@ impl Look {
         texture_rows: TextureRows::Up,
         fov_axis: None,
         texture_frames: TextureFrames::Shapes,
+        ray_origins: RayOrigins::Offset,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -179,6 +199,8 @@ impl Look {
     pub const WSO: Look = Look {
         name: "wso",
         renderer: "W-Solaris/computer-graphics (the D3 family's path tracer)",
+        estimator: Estimator::BsdfSampling,
+        ray_origins: RayOrigins::AtHit,
         max_depth: 14,
         miss: Miss::Unweighted,
         point_lights: PointLights::Never,

@@ -191,6 +191,7 @@ impl SamplingOptions {
         let integrator = self.integrator.unwrap_or(match look.estimator {
             Estimator::PathTracing => Integrator::Path,
             Estimator::RayCasting => Integrator::RayCast,
+            Estimator::BsdfSampling => Integrator::Original,
         });
         // Ray casting through pixel centres is deterministic: one sample.
         let spp = if integrator == Integrator::RayCast && look.pixels == PixelSampling::Centre {

@@ -9,6 +9,7 @@
 
 use crate::bsdf::GlassChoice;
 use crate::color::Color;
+use crate::look::RayOrigins;
 use crate::math::Ray;
 use crate::sampler::Sampler;
 use crate::shading::Shading;
@@ -48,7 +49,11 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
             break;
         }
         let direction = scattered.wi;
-        ray = Ray::new(at.spawn_origin(&direction), direction, ray.time);
+        let origin = match view.look.ray_origins {
+            RayOrigins::Offset => at.spawn_origin(&direction),
+            RayOrigins::AtHit => at.point,
+        };
+        ray = Ray::new(origin, direction, ray.time);
     }
     result
 }
