@@ -23,6 +23,7 @@
 use std::sync::Arc;
 
 use crate::bsdf::DielectricFresnel;
+use crate::bsdf::build::LookLobes;
 use crate::color::Color;
 use crate::math::Vec3;
 use crate::medium::{HenyeyGreenstein, Medium};
@@ -141,6 +142,9 @@ pub struct Look {
     pub fov_axis: Option<FovAxis>,
     pub texture_frames: TextureFrames,
     pub ray_origins: RayOrigins,
+    /// Whether osb's `glossy` is its renderer's own weight (a GGX coat
+    /// otherwise).
+    pub osb_glossy: bool,
 }
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -164,6 +168,7 @@ impl Look {
         fov_axis: None,
         texture_frames: TextureFrames::Shapes,
         ray_origins: RayOrigins::Offset,
+        osb_glossy: false,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -217,6 +222,7 @@ impl Look {
         point_lights: PointLights::Never,
         phong_lobes: false,
         fresnel: DielectricFresnel::SmallptUnweighted,
+        osb_glossy: true,
         ..Look::ORIGINAL
     };
 
@@ -284,6 +290,14 @@ impl Look {
                 .textures
                 .iter_mut()
                 .for_each(|texture| Arc::make_mut(texture).flip_rows());
+        }
+    }
+
+    /// What this look decides about materials' lobes.
+    pub fn lobes(&self) -> LookLobes {
+        LookLobes {
+            phong: self.phong_lobes,
+            osb_glossy: self.osb_glossy,
         }
     }
 

@@ -12,6 +12,7 @@
 //! | `refract`, `roughness` >= 1e-3 | GGX rough dielectric, `alpha = roughness` | `refract` |
 //! | `phong` | energy-normalised Phong of `color`, `exponent` | 1 |
 //! | `coat` | GGX conductor with Schlick's term from `f0`, `alpha` | 1 |
+//! | `osb_glossy`, in looks that render it | osb's glossy weight instead of Lambert, and no coat | `diffuse` |
 //!
 //! cav's `angular_weights` replace the three weights by their
 //! angle-dependent values at each hit (and the glass then refracts only: its
@@ -25,6 +26,7 @@ use super::dielectric::{Dielectric, GlassChoice};
 use super::fresnel::DielectricFresnel;
 use super::lambert::Lambert;
 use super::lobe::Lobe;
+use super::osb_glossy::OsbGlossy;
 use super::phong::Phong;
 use super::rough_dielectric::RoughDielectric;
 use crate::color::Color;
@@ -41,19 +43,29 @@ pub struct Rules {
     pub glass: GlassChoice,
 }
 
-/// The lobe set of every material, in order; `phong`: whether Phong lobes
-/// (PA1's `specularColor`/`shininess`) are rendered (the look decides).
-pub fn lobe_sets(materials: &[Material], phong: bool) -> Vec<LobeSet> {
+/// What a look decides about the lobes of a material.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LookLobes {
+    /// Whether Phong lobes (PA1's `specularColor`/`shininess`) are rendered.
+    pub phong: bool,
+    /// Whether osb's `glossy` is its own renderer's weight (see
+    /// [`OsbGlossy`]) rather than a physical GGX coat.
+    pub osb_glossy: bool,
+}
+
+/// The lobe set of every material, in order.
+pub fn lobe_sets(materials: &[Material], look: LookLobes) -> Vec<LobeSet> {
     materials
         .iter()
-        .map(|m| LobeSet::from_material(m, phong))
+        .map(|m| LobeSet::from_material(m, look))
         .collect()
 }
 
 impl LobeSet {
     /// The lobes of `material` (see the module documentation); the tints
     /// of the weighted lobes are the hit's colour.
-    pub fn from_material(material: &Material, phong: bool) -> LobeSet {
+    pub fn from_material(material: &Material, look: LookLobes) -> LobeSet {
+        let osb_glossy = look.osb_glossy && material.osb_glossy;
         let mut set = LobeSet {
             ior: material.ior,
             angular: material.angular_weights,
@@ -70,6 +82,9 @@ impl LobeSet {
         let placeholder = Color::WHITE;
         if diffuse > MIN_DIFFUSE_RATE || angular {
             let lobe = match material.diffuse_model {
+                DiffuseModel::Lambert if osb_glossy => {
+                    Lobe::OsbGlossy(OsbGlossy { color: placeholder })
+                }
                 DiffuseModel::Lambert => Lobe::Lambert(Lambert {
                     albedo: placeholder,
                 }),
@@ -111,14 +126,14 @@ impl LobeSet {
             // cav's glass only refracts: its reflection is the conductor.
             set.push_slot(lobe, refract, true, !angular);
         }
-        if let Some(phong) = material.phong.filter(|_| phong) {
+        if let Some(phong) = material.phong.filter(|_| look.phong) {
             let lobe = Phong {
                 color: phong.color,
                 exponent: phong.exponent.max(0.0),
             };
             set.push_slot(Lobe::Phong(lobe), 1.0, false, true);
         }
-        if let Some(coat) = material.coat {
+        if let Some(coat) = material.coat.filter(|_| !osb_glossy) {
             let lobe = Conductor {
                 tint: coat.color,
                 alpha: coat.alpha,

@@ -16,6 +16,7 @@ use super::dielectric::Dielectric;
 use super::dielectric::GlassChoice;
 use super::fresnel::DielectricFresnel;
 use super::lambert::Lambert;
+use super::osb_glossy::OsbGlossy;
 use super::phong::Phong;
 use super::rough_dielectric::RoughDielectric;
 use crate::color::Color;
@@ -57,6 +58,7 @@ pub enum Lobe {
     RoughDielectric(RoughDielectric),
     Phong(Phong),
     CookTorrance(CookTorrance),
+    OsbGlossy(OsbGlossy),
 }
 
 impl Lobe {
@@ -96,6 +98,7 @@ impl Lobe {
             Lobe::RoughDielectric(d) => d.tint,
             Lobe::Phong(p) => p.color,
             Lobe::CookTorrance(c) => c.color,
+            Lobe::OsbGlossy(g) => g.color,
         };
         tint.average().max(0.0)
     }
@@ -110,6 +113,7 @@ impl Lobe {
             Lobe::RoughDielectric(d) => d.tint,
             Lobe::Phong(p) => p.color,
             Lobe::CookTorrance(c) => c.color,
+            Lobe::OsbGlossy(g) => g.color,
         }
     }
 
@@ -122,6 +126,7 @@ impl Lobe {
             Lobe::RoughDielectric(d) => d.tint = tint,
             Lobe::Phong(p) => p.color = tint,
             Lobe::CookTorrance(c) => c.color = tint,
+            Lobe::OsbGlossy(g) => g.color = tint,
         }
     }
 
@@ -167,6 +172,7 @@ impl Lobe {
             Lobe::RoughDielectric(d) => d.sample(wo, uc, u),
             Lobe::Phong(p) => Some(p.sample(wo, u)),
             Lobe::CookTorrance(c) => c.sample(wo, u),
+            Lobe::OsbGlossy(g) => Some(g.sample(wo, u)),
         }
     }
 
@@ -178,6 +184,7 @@ impl Lobe {
             Lobe::RoughDielectric(d) => d.eval(wo, wi),
             Lobe::Phong(p) => p.eval(wo, wi),
             Lobe::CookTorrance(c) => c.eval(wo, wi),
+            Lobe::OsbGlossy(g) => g.eval(wo, wi),
         }
     }
 
@@ -189,6 +196,7 @@ impl Lobe {
             Lobe::RoughDielectric(d) => d.pdf(wo, wi),
             Lobe::Phong(p) => p.pdf(wo, wi),
             Lobe::CookTorrance(c) => c.pdf(wo, wi),
+            Lobe::OsbGlossy(g) => g.pdf(wi),
         }
     }
 }

@@ -34,6 +34,7 @@ pub mod fresnel;
 pub mod lambert;
 pub mod lobe;
 pub mod microfacet;
+pub mod osb_glossy;
 pub mod phong;
 pub mod rough_dielectric;
 

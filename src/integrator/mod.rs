@@ -185,8 +185,8 @@ impl<'a> SceneView<'a> {
             max_depth: original::MAX_DEPTH,
             camera: None,
             look,
-            lobe_sets: lobe_sets(&scene.materials, look.phong_lobes),
-            default_lobes: LobeSet::from_material(&Material::DEFAULT, look.phong_lobes),
+            lobe_sets: lobe_sets(&scene.materials, look.lobes()),
+            default_lobes: LobeSet::from_material(&Material::DEFAULT, look.lobes()),
         }
     }
 }

@@ -9,7 +9,7 @@
 //! | `roughness` (canonical, bow, piu) | the specular and refract weights become GGX | `alpha = roughness` |
 //! | `GlossyMaterial { albedo roughness metallic }` (bow) | diffuse weight `1 - metallic`, plus a GGX coat | `alpha = roughness`, Schlick `F0 = 0.04 + (albedo - 0.04) metallic` |
 //! | `metallic` elsewhere | not rendered (warned) | |
-//! | `glossy 1` (osb) | a GGX coat on top of the diffuse weight | `alpha = 0.1`, Schlick `F0 = 0.2`, as osb's renderer fixes them |
+//! | `glossy 1` (osb) | a GGX coat on top of the diffuse weight; in the osb look, osb's own glossy weight instead (`bsdf::osb_glossy`) | `alpha = 0.1`, Schlick `F0 = 0.2`, as osb's renderer fixes them |
 //! | `cookTorrence a F0 x` (rub) | the diffuse weight becomes rub's Cook-Torrance | `alpha = a`, scalar `F0` (`x` unused, as in rub) |
 //! | `Fresnel { fbase fscale power }` (cav) | angle-dependent specular and refract weights | see `AngularWeights` |
 //! | `reflectiveColor` (MIT 6.837 legacy) | a mirror on top of the weights | reflectance = `reflectiveColor` |
@@ -79,6 +79,7 @@ pub fn add_lobes(
         context.not_rendered(at, "metallic", "only bow's GlossyMaterial has it")?;
     }
     if f.glossy == Some(true) {
+        material.osb_glossy = true;
         material.coat = Some(Coat {
             alpha: OSB_GLOSSY_ALPHA,
             color: Color::gray(OSB_GLOSSY_F0),
@@ -166,6 +167,7 @@ mod tests {
             fresnel: ConductorFresnel::Schlick,
         };
         assert_eq!(m.coat, Some(coat));
+        assert!(m.osb_glossy);
         assert_eq!(material("Material { glossy 0 }").coat, None);
     }
 

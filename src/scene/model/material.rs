@@ -45,6 +45,10 @@ pub struct Material {
     /// A GGX specular coat added on top of the weights (`glossy`, bow's
     /// `GlossyMaterial`).
     pub coat: Option<Coat>,
+    /// osb's `glossy 1`: in looks that render it, the diffuse weight is
+    /// osb's own glossy weight and `coat` is left out (see
+    /// `bsdf::osb_glossy`); elsewhere `coat` is its physical reading.
+    pub osb_glossy: bool,
     /// Weights of the specular and refract lobes that depend on the angle of
     /// incidence (cav's `Fresnel { fbase fscale power }`); they replace
     /// `specular` and `refract`, and the diffuse weight is the rest.
@@ -78,6 +82,7 @@ impl Material {
         conductor_fresnel: ConductorFresnel::Constant,
         phong: None,
         coat: None,
+        osb_glossy: false,
         angular_weights: None,
         interior: None,
         interface: false,
