@@ -317,12 +317,14 @@ impl Look {
                     (Look::OSB, why(" with osb's DepthCamera, glossy or speed"))
                 } else if has("DiskLights") || has("focal") {
                     (Look::YLC, why(" with ylc's DiskLights or focal"))
+                } else if has("bump") {
+                    // yuzc19's renderer has no bump maps; W-Solaris's has.
+                    (Look::WSO, why(" with a bump map: W-Solaris's path tracer"))
                 } else {
-                    // W-Solaris's and yuzc19's files are word for word the
-                    // same (vase.txt is scene09_norm.txt at another size):
-                    // yuzc19's conventions reproduce more of the family's
-                    // renders (W-Solaris's depend on rays that re-hit their
-                    // own surface, see docs/looks-alike.md); --look wso.
+                    // W-Solaris's and yuzc19's files are otherwise word for
+                    // word the same (vase.txt is scene09_norm.txt at another
+                    // size); yuzc19's conventions are the default, --look
+                    // wso gives W-Solaris's (docs/looks-alike.md).
                     (Look::YZC, why(": the family's path tracer (yuzc19's)"))
                 }
             }
@@ -453,6 +455,8 @@ mod tests {
         let ylc =
             "DiskLights { numDiskLights 0 } Materials { Material { color 1 1 1 type 1 0 0 } }";
         assert_eq!(look_of(&format!("{CAMERA}{ylc}")), "ylc");
+        let wso = "Materials { Material { color 1 1 1 type 1 0 0 bump texture/rope.jpg } }";
+        assert_eq!(look_of(&format!("{CAMERA}{wso}")), "wso");
         let canonical = "Materials { Material { color 1 1 1 diffusionRate 1 } }";
         assert_eq!(look_of(&format!("{CAMERA}{canonical}")), "original");
     }

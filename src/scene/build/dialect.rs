@@ -56,7 +56,14 @@ const CYF: [&str; 6] = [
 ];
 
 /// Words that tell renderers of one dialect apart (see `look::Look::detect`).
-const LOOK_FINGERPRINTS: [&str; 5] = ["DepthCamera", "glossy", "speed", "DiskLights", "focal"];
+const LOOK_FINGERPRINTS: [&str; 6] = [
+    "DepthCamera",
+    "glossy",
+    "speed",
+    "DiskLights",
+    "focal",
+    "bump",
+];
 
 /// The words of [`LOOK_FINGERPRINTS`] that the file uses.
 pub fn look_fingerprints(document: &Document) -> Vec<String> {
