@@ -2,7 +2,7 @@
 //! that lets the eye sit behind a wall, and an optional thin lens.
 
 use crate::math::{Point3, Ray, Vec3};
-use crate::scene::model::{CameraDesc, FovAxis};
+use crate::scene::model::{CameraDesc, FovAxis, LensShape};
 use crate::trig::sin_cos_turns;
 
 /// Image-plane scale of the original when no field of view is given:
@@ -27,6 +27,7 @@ pub struct Camera {
     canvas_distance: f64,
     focus_distance: f64,
     lens_radius: f64,
+    lens_shape: LensShape,
     pub width: u32,
     pub height: u32,
 }
@@ -67,9 +68,17 @@ impl Camera {
             canvas_distance: desc.canvas_distance,
             focus_distance: desc.focus_distance,
             lens_radius: desc.lens_radius,
+            lens_shape: desc.lens_shape,
             width,
             height,
         }
+    }
+
+    /// The lens point of the unit-square sample `lens`.
+    #[inline]
+    fn eye(&self, lens: [f64; 2]) -> Point3 {
+        let (a, b) = lens_point(self.lens_shape, lens);
+        self.center + (self.true_up * a + self.right * b) * self.lens_radius
     }
 
     /// Whether rays need lens samples (depth of field).
@@ -90,8 +99,7 @@ impl Camera {
         // Every unnormalised `d` has d . direction = 1: the points
         // center + d * s form planes, the focal plane at s = focus_distance.
         let focus = self.center + d * self.focus_distance;
-        let (a, b) = concentric_disk(lens);
-        let eye = self.center + (self.true_up * a + self.right * b) * self.lens_radius;
+        let eye = self.eye(lens);
         let new_direction = (focus - eye).normalize();
         let along = new_direction.dot(&self.direction).max(1e-12);
         let origin = eye + new_direction * (self.canvas_distance / along);
@@ -126,8 +134,7 @@ impl Camera {
     /// same `lens` sample heads for `point`. `None` behind the camera.
     pub fn project(&self, point: &Point3, lens: [f64; 2]) -> Option<Projection> {
         let eye = if self.has_lens() {
-            let (a, b) = concentric_disk(lens);
-            self.center + (self.true_up * a + self.right * b) * self.lens_radius
+            self.eye(lens)
         } else {
             self.center
         };
@@ -173,6 +180,19 @@ fn normalize_or(v: Vec3, fallback: Vec3) -> Vec3 {
     }
 }
 
+/// A point of the lens of `shape` with radius (or half side) 1, from a
+/// point of the unit square.
+pub fn lens_point(shape: LensShape, square: [f64; 2]) -> (f64, f64) {
+    match shape {
+        LensShape::Disk => concentric_disk(square),
+        LensShape::DiskUniformRadius => {
+            let (sin, cos) = sin_cos_turns(square[0]);
+            (square[1] * cos, square[1] * sin)
+        }
+        LensShape::Square => (2.0 * square[0] - 1.0, 2.0 * square[1] - 1.0),
+    }
+}
+
 /// Shirley and Chiu's concentric map from the unit square to the unit disk
 /// (uniform density; the original's squared-uniform lens was not).
 pub fn concentric_disk(square: [f64; 2]) -> (f64, f64) {
@@ -196,6 +216,31 @@ pub fn concentric_disk(square: [f64; 2]) -> (f64, f64) {
 mod tests {
     use super::*;
 
+    #[test]
+    fn lens_shapes_spread_points_as_their_renderers_do() {
+        // Mean distance from the centre over a midpoint grid of the square:
+        // 2/3 for the uniform disk, 1/2 for a uniform radius, and the square
+        // reaches its corners.
+        let n = 200;
+        let mean = |shape: LensShape| {
+            let mut total = 0.0;
+            for i in 0..n {
+                for j in 0..n {
+                    let u = [(i as f64 + 0.5) / n as f64, (j as f64 + 0.5) / n as f64];
+                    let (a, b) = lens_point(shape, u);
+                    total += (a * a + b * b).sqrt();
+                }
+            }
+            total / (n * n) as f64
+        };
+        assert!((mean(LensShape::Disk) - 2.0 / 3.0).abs() < 1e-3);
+        assert!((mean(LensShape::DiskUniformRadius) - 0.5).abs() < 1e-3);
+        assert_eq!(lens_point(LensShape::Square, [1.0, 0.0]), (1.0, -1.0));
+        // The square's mean distance, (sqrt 2 + asinh 1) / 3.
+        let square = (2f64.sqrt() + 1f64.asinh()) / 3.0;
+        assert!((mean(LensShape::Square) - square).abs() < 1e-3);
+    }
+
     fn smallpt_desc() -> CameraDesc {
         CameraDesc {
             center: Vec3::new(50.0, 52.0, 295.6),
@@ -207,6 +252,7 @@ mod tests {
             canvas_distance: 140.0,
             focus_distance: 1.0,
             lens_radius: 0.0,
+            lens_shape: LensShape::Disk,
         }
     }
 

@@ -27,7 +27,7 @@ use crate::bsdf::build::LookLobes;
 use crate::color::Color;
 use crate::math::Vec3;
 use crate::medium::{HenyeyGreenstein, Medium};
-use crate::scene::model::{CameraDesc, Dialect, FovAxis, Scene};
+use crate::scene::model::{CameraDesc, Dialect, FovAxis, LensShape, Scene};
 
 /// How radiance is estimated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -145,6 +145,8 @@ pub struct Look {
     /// Whether osb's `glossy` is its renderer's own weight (a GGX coat
     /// otherwise).
     pub osb_glossy: bool,
+    /// The lens shape the renderer gives every camera (`None`: the scene's).
+    pub lens_shape: Option<LensShape>,
 }
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -169,6 +171,7 @@ impl Look {
         texture_frames: TextureFrames::Shapes,
         ray_origins: RayOrigins::Offset,
         osb_glossy: false,
+        lens_shape: None,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -206,6 +209,7 @@ impl Look {
         renderer: "W-Solaris/computer-graphics (the D3 family's path tracer)",
         estimator: Estimator::BsdfSampling,
         ray_origins: RayOrigins::AtHit,
+        lens_shape: Some(LensShape::Square),
         max_depth: 14,
         miss: Miss::Unweighted,
         point_lights: PointLights::Never,
@@ -247,6 +251,7 @@ impl Look {
         name: "yzc",
         renderer: "yuzc19/Ray-tracing-engine",
         fov_axis: Some(FovAxis::Horizontal),
+        lens_shape: Some(LensShape::Square),
         max_depth: 11,
         miss: Miss::Weighted,
         point_lights: PointLights::Never,
@@ -274,6 +279,9 @@ impl Look {
         let mut camera = camera.clone();
         if let (Some(axis), Some((angle, _))) = (self.fov_axis, camera.fov) {
             camera.fov = Some((angle, axis));
+        }
+        if let Some(shape) = self.lens_shape {
+            camera.lens_shape = shape;
         }
         camera
     }

@@ -63,6 +63,7 @@ impl Scene {
                 canvas_distance: 0.0,
                 focus_distance: 1.0,
                 lens_radius: 0.0,
+                lens_shape: LensShape::Disk,
             },
             background: Color::BLACK,
             materials,
@@ -203,6 +204,22 @@ pub struct CameraDesc {
     pub focus_distance: f64,
     /// Lens radius; depth of field is on when it is at least 1e-4.
     pub lens_radius: f64,
+    /// How lens points are spread over the lens.
+    pub lens_shape: LensShape,
+}
+
+/// How a camera spreads its lens points (`lens_radius` is the disk's radius
+/// or the square's half side).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LensShape {
+    /// Uniform over the disk (a thin lens).
+    #[default]
+    Disk,
+    /// Over the disk with the radius uniform, so points crowd the centre
+    /// (osb's `DepthCamera`).
+    DiskUniformRadius,
+    /// Uniform over the square (yuzc19's and W-Solaris's cameras).
+    Square,
 }
 
 /// Lights of the PA1 and coursework dialects (besides emissive materials).

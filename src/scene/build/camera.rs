@@ -5,7 +5,7 @@ use crate::math::{Point3, Vec3};
 use crate::scene::ast::Block;
 use crate::scene::build::{Context, Cursor};
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{CameraDesc, Dialect, FovAxis};
+use crate::scene::model::{CameraDesc, Dialect, FovAxis, LensShape};
 
 /// Largest accepted `width * height`.
 pub const MAX_PIXELS: u64 = 1 << 28;
@@ -116,6 +116,14 @@ pub fn build_camera(
         return Err(context.error(location, "the camera direction is zero".into()));
     }
     let focus_distance = focus.unwrap_or(1.0);
+    // osb's DepthCamera: `aperture` is the lens diameter, its radius drawn
+    // uniformly (looks.md).
+    let lens_shape = if name == "DepthCamera" {
+        lens_radius *= 0.5;
+        LensShape::DiskUniformRadius
+    } else {
+        LensShape::Disk
+    };
     if let Some(theta) = defocus_angle {
         lens_radius = focus_distance * (theta.to_radians() / 2.0).tan().abs();
     }
@@ -165,6 +173,7 @@ pub fn build_camera(
         canvas_distance,
         focus_distance,
         lens_radius,
+        lens_shape,
     };
     Ok((camera, mist))
 }
@@ -235,8 +244,15 @@ mod tests {
         let c = camera("PerspectiveCamera { width 2 height 2 defocusAngle 90 focusDist 2 }")
             .expect("ok");
         assert!((c.lens_radius - 2.0).abs() < 1e-9);
-        let c = camera("DepthCamera { width 2 height 2 focalLength 2 }").expect("ok");
+        let c = camera("DepthCamera { width 2 height 2 focalLength 2 aperture 10 }").expect("ok");
         assert_eq!(c.focus_distance, 3.0);
+        // osb's aperture is the diameter, the radius drawn uniformly.
+        assert_eq!(
+            (c.lens_radius, c.lens_shape),
+            (5.0, LensShape::DiskUniformRadius)
+        );
+        let c = camera("PerspectiveCamera { width 2 height 2 aperture 10 }").expect("ok");
+        assert_eq!((c.lens_radius, c.lens_shape), (10.0, LensShape::Disk));
     }
 
     #[test]
