@@ -215,7 +215,7 @@ fn read_mist(
 mod tests {
     use crate::scene::LoadOptions;
     use crate::scene::build::build;
-    use crate::scene::model::FovAxis;
+    use crate::scene::model::{FovAxis, LensShape};
     use crate::scene::parse::parse;
     use std::path::Path;
 
