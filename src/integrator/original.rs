@@ -51,7 +51,7 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
         let direction = scattered.wi;
         let origin = match view.look.ray_origins {
             RayOrigins::Offset => at.spawn_origin(&direction),
-            RayOrigins::AtHit => at.point,
+            RayOrigins::AtHit => ray.at(hit.t),
         };
         ray = Ray::new(origin, direction, ray.time);
     }
