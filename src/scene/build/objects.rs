@@ -380,6 +380,27 @@ mod tests {
     }
 
     #[test]
+    fn osb_speed_moves_the_sphere_backwards_and_move_vector_forwards() {
+        let objects = leaves(
+            "Group { Sphere { center 0 0 0 radius 1 speed 15 15 0 }\n\
+             Sphere { center 0 0 0 radius 1 moveVector 1 2 0 } }",
+        )
+        .expect("builds");
+        use crate::math::Vec3;
+        let motions: Vec<Vec3> = objects
+            .iter()
+            .filter_map(|o| match o {
+                Object::Sphere { motion, .. } => Some(*motion),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(
+            motions,
+            [Vec3::new(-15.0, -15.0, 0.0), Vec3::new(1.0, 2.0, 0.0)]
+        );
+    }
+
+    #[test]
     fn zero_materials_get_a_default() {
         let scene = build_text(
             "PerspectiveCamera { width 2 height 2 }\nGroup { Sphere { center 0 0 0 radius 1 } }",

@@ -183,7 +183,15 @@ pub fn build_shape(
             )?;
             let mut motion = Vec3::zeros();
             for key in ["moveVector", "speed", "motion"] {
-                motion = f.vec3_or(context, key, motion)?;
+                if f.has(key) {
+                    motion = f.vec3_or(context, key, motion)?;
+                    // osb's `speed` shifts the ray's origin by U speed at
+                    // every test (looks.md): the sphere is seen at
+                    // center - U speed.
+                    if key == "speed" {
+                        motion = -motion;
+                    }
+                }
             }
             Object::Sphere {
                 center: f.vec3(context, "center")?,
