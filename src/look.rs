@@ -25,6 +25,7 @@ use std::sync::Arc;
 use crate::bsdf::DielectricFresnel;
 use crate::bsdf::build::LookLobes;
 use crate::color::Color;
+use crate::integrator::Integrator;
 use crate::math::Vec3;
 use crate::medium::{HenyeyGreenstein, Medium};
 use crate::scene::model::{CameraDesc, Dialect, FovAxis, LensShape, Scene};
@@ -57,6 +58,17 @@ pub enum RayOrigins {
     /// again; inside an emitting mirror sphere it collects the emission at
     /// every bounce).
     AtHit,
+}
+
+impl Estimator {
+    /// The integrator that computes this estimator by default.
+    pub fn integrator(self) -> Integrator {
+        match self {
+            Estimator::PathTracing => Integrator::Path,
+            Estimator::RayCasting => Integrator::RayCast,
+            Estimator::BsdfSampling => Integrator::Original,
+        }
+    }
 }
 
 /// What a ray that hits nothing brings back.

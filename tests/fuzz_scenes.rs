@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use pathtracer::integrator::Integrator;
-use pathtracer::look::{Estimator, Look};
+use pathtracer::look::Look;
 use pathtracer::render::{RenderSettings, render};
 use pathtracer::rng::Rng;
 use pathtracer::sampler::SamplerKind;
@@ -134,10 +134,7 @@ fn render_tiny(mut scene: Scene) -> Result<(), String> {
     let (look, _) = Look::detect(&scene);
     look.adapt(&mut scene);
     let world = World::build_with(&scene, look.one_sided_planes);
-    let own = match look.estimator {
-        Estimator::PathTracing => Integrator::Path,
-        Estimator::RayCasting => Integrator::RayCast,
-    };
+    let own = look.estimator.integrator();
     let integrators: &[Integrator] = if own == Integrator::Path {
         &[Integrator::Path]
     } else {

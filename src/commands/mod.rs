@@ -26,7 +26,7 @@ use pathtracer::film::Film;
 use pathtracer::image_io::{Encoding, Tonemap};
 use pathtracer::integrator::Integrator;
 use pathtracer::limits::{MAX_IMAGE_SIDE, MAX_PATH_DEPTH, MemoryBudget};
-use pathtracer::look::{Estimator, Look, PixelSampling};
+use pathtracer::look::{Look, PixelSampling};
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Dialect, Scene};
@@ -188,11 +188,9 @@ impl SamplingOptions {
 
     pub fn settings(&self, scene: &Scene, spp: u32, progress: bool) -> RenderSettings {
         let (look, _) = self.look(scene);
-        let integrator = self.integrator.unwrap_or(match look.estimator {
-            Estimator::PathTracing => Integrator::Path,
-            Estimator::RayCasting => Integrator::RayCast,
-            Estimator::BsdfSampling => Integrator::Original,
-        });
+        let integrator = self
+            .integrator
+            .unwrap_or_else(|| look.estimator.integrator());
         // Ray casting through pixel centres is deterministic: one sample.
         let spp = if integrator == Integrator::RayCast && look.pixels == PixelSampling::Centre {
             1
