@@ -47,6 +47,7 @@ use arrayvec::ArrayVec;
 use crate::color::Color;
 use crate::math::{Vec3, orthonormal_basis};
 use crate::scene::model::ConductorFresnel;
+use crate::spectral::Dispersion;
 
 pub use build::{Rules, lobe_sets};
 pub use dielectric::GlassChoice;
@@ -92,6 +93,8 @@ pub struct LobeSet {
     /// cav's weights of lobes 0, 1, 2 (diffuse, conductor, dielectric).
     angular: Option<crate::scene::model::AngularWeights>,
     ior: f64,
+    /// The dispersion of its dielectric lobe (none without one).
+    dispersion: Option<Dispersion>,
     smooth_lobes: usize,
     only_lambert: bool,
     /// One Lambert lobe tinted by the hit's colour, nothing else.
@@ -174,6 +177,9 @@ pub struct Bsdf<'a> {
     rules: Rules,
     /// The outgoing direction's cosine (for angle-dependent weights).
     cos_o: f64,
+    /// The index of the dielectric lobes for the path's wavelength
+    /// (`None`: the material's).
+    ior: Option<f64>,
 }
 
 /// The weights and probabilities of the lobes at one hit.
@@ -203,6 +209,24 @@ impl<'a> Bsdf<'a> {
             entering,
             rules,
             cos_o,
+            ior: None,
+        }
+    }
+
+    /// How the index of its dielectric lobe depends on the wavelength:
+    /// where a path must be split (see [`crate::spectral`]).
+    #[inline]
+    pub fn dispersion(&self) -> Option<Dispersion> {
+        self.set.dispersion
+    }
+
+    /// The same BSDF with dielectric lobes of index `ior` (the index of
+    /// the material's dispersion at the path's wavelength).
+    #[inline]
+    pub fn with_ior(self, ior: f64) -> Bsdf<'a> {
+        Bsdf {
+            ior: Some(ior),
+            ..self
         }
     }
 
@@ -265,6 +289,9 @@ impl<'a> Bsdf<'a> {
         let mut lobe = self.set.lobes[i];
         if self.set.tinted[i] {
             lobe.set_tint(self.color);
+        }
+        if let Some(ior) = self.ior {
+            lobe.set_ior(ior);
         }
         let fresnel = self.set.follows_rules[i].then_some(self.rules.fresnel);
         lobe.set_side(self.entering, fresnel, self.rules.glass);

@@ -320,6 +320,9 @@ pub fn prepare(scene: &mut Scene, settings: &RenderSettings) -> World {
     for note in pathtracer::integrator::media_notes(scene, settings.integrator) {
         eprintln!("note: {note}");
     }
+    for notice in pathtracer::integrator::dispersion_notes(scene, settings.integrator) {
+        eprintln!("{notice}");
+    }
     World::build_with(scene, settings.look.one_sided_planes)
 }
 
