@@ -52,7 +52,9 @@ fn refract(set: &LobeSet, d: Vec3, normal: Vec3, entering: bool, spectrum: &Path
     let dispersion = bsdf.dispersion().expect("a dispersive glass");
     let bsdf = bsdf.with_ior(dispersion.ior(spectrum));
     // uc near 1 takes the refraction (reflection has probability R).
-    let sample = bsdf.sample(&wo, 1.0 - 1e-9, [0.5, 0.5]).expect("a direction");
+    let sample = bsdf
+        .sample(&wo, 1.0 - 1e-9, [0.5, 0.5])
+        .expect("a direction");
     assert!(sample.delta);
     sample.wi
 }
@@ -90,12 +92,18 @@ fn a_prism_bends_each_wavelength_by_snells_law_with_the_cauchy_index() {
         let theta_exit = (n * (apex - theta_inside).sin()).asin();
         let expected = theta_in + theta_exit - apex;
         let deviation = incoming.dot(&out).clamp(-1.0, 1.0).acos();
-        assert!((deviation - expected).abs() < 1e-9, "{nm} nm: {deviation} vs {expected}");
+        assert!(
+            (deviation - expected).abs() < 1e-9,
+            "{nm} nm: {deviation} vs {expected}"
+        );
         deviations.push(deviation);
     }
     // Shorter wavelengths bend more, by a visible amount over the spectrum.
     assert!(deviations.windows(2).all(|w| w[0] > w[1]), "{deviations:?}");
-    assert!(deviations[0] - deviations[6] > 1f64.to_radians(), "{deviations:?}");
+    assert!(
+        deviations[0] - deviations[6] > 1f64.to_radians(),
+        "{deviations:?}"
+    );
 }
 
 /// A glass ball (material 0) in a diffuse enclosure (material 1) lit by a
@@ -170,7 +178,10 @@ fn assert_same_mean(a: [(f64, f64); 3], b: [(f64, f64); 3], what: &str) {
             (ma - mb).abs() <= 4.0 * error,
             "{what}: channel {k}: {ma} +- {ea} vs {mb} +- {eb}"
         );
-        assert!(error < 0.015 * ma, "{what}: too noisy to tell: {error} of {ma}");
+        assert!(
+            error < 0.015 * ma,
+            "{what}: too noisy to tell: {error} of {ma}"
+        );
     }
 }
 
@@ -210,4 +221,78 @@ fn a_scene_whose_paths_meet_no_dispersive_glass_traces_exactly_as_without_one() 
     let dispersive = glass_scene(glass(Some(Dispersion::Channels([1.5; 3]))), wall);
     let (_, c) = radiance_samples(&dispersive, 2_000);
     assert!(a.iter().zip(&c).any(|(x, y)| x != y));
+}
+
+fn pathtracer(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_pathtracer"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the binary runs")
+}
+
+/// A Cambrian scene with a Cauchy glass ball and the camera's flag, and
+/// an output path, in a fresh directory.
+fn cambrian_scene(name: &str) -> (std::path::PathBuf, std::path::PathBuf) {
+    let dir = std::env::temp_dir().join(format!(
+        "pathtracer-dispersion-{name}-{}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let scene = dir.join("prism.txt");
+    std::fs::write(
+        &scene,
+        "PerspectiveCamera { center 0 0 3 direction 0 0 -1 up 0 1 0 angle 35 width 8 height 8 dispersion }
+Materials { numMaterials 3
+  PhongMaterial { type REFR color 1 1 1 emission 0 0 0 refractive_rate 1.5 cauchy 1.5 0.02 }
+  PhongMaterial { type DIFF color 0.8 0.8 0.8 emission 0 0 0 refractive_rate 1 }
+  PhongMaterial { type DIFF color 0 0 0 emission 10 10 10 refractive_rate 1 }
+}
+Group { numObjects 3
+  MaterialIndex 0 Sphere { center 0 0 0 radius 0.6 }
+  MaterialIndex 1 Sphere { center 0 0 0 radius 6 }
+  MaterialIndex 2 Sphere { center 0 3 0 radius 0.5 }
+}
+",
+    )
+    .expect("scene written");
+    (scene, dir.join("out.pfm"))
+}
+
+#[test]
+fn the_command_line_renders_dispersion_and_says_what_it_leaves_out() {
+    let (scene, out) = cambrian_scene("cli");
+    let (scene, out) = (scene.to_str().unwrap(), out.to_str().unwrap());
+    let common = ["render", scene, "-o", out, "--spp", "4", "--quiet"];
+    let run = pathtracer(&common);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success(), "{stderr}");
+    assert!(stderr.contains("note: dispersion"), "{stderr}");
+    assert!(!stderr.contains("not rendered"), "{stderr}");
+    // The original estimator keeps one index, and says so.
+    let run = pathtracer(&[&common[..], &["--integrator", "original"]].concat());
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success(), "{stderr}");
+    assert!(
+        stderr.contains(
+            "warning: the original estimator renders dispersive materials with one index"
+        ),
+        "{stderr}"
+    );
+    // yuzc19's flag, and indices that are not three numbers.
+    let run = pathtracer(&[&common[..], &["--dispersion", "yuzc19"]].concat());
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let run = pathtracer(&[&common[..], &["--dispersion", "1.5,1.6"]].concat());
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(!run.status.success());
+    assert!(
+        stderr.contains("expected 'yuzc19' or three indices R,G,B"),
+        "{stderr}"
+    );
+    let _ = std::fs::remove_dir_all(std::path::Path::new(out).parent().unwrap());
 }

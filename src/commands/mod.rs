@@ -29,8 +29,8 @@ use pathtracer::limits::{MAX_IMAGE_SIDE, MAX_PATH_DEPTH, MemoryBudget};
 use pathtracer::look::{Estimator, Look, PixelSampling};
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
-use pathtracer::scene::model::{Dialect, Scene};
 use pathtracer::scene::build::dispersion::apply_channels;
+use pathtracer::scene::model::{Dialect, Scene};
 use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
 use pathtracer::spectral::Dispersion;
 use pathtracer::world::World;
@@ -347,7 +347,11 @@ fn parse_dispersion(text: &str) -> Result<Dispersion, String> {
         .collect::<Result<_, _>>()
         .map_err(|_| format!("'{text}': expected 'yuzc19' or three indices R,G,B"))?;
     match indices[..] {
-        [r, g, b] if [r, g, b].iter().all(|n| n.is_finite() && (1.0..=10.0).contains(n)) => {
+        [r, g, b]
+            if [r, g, b]
+                .iter()
+                .all(|n| n.is_finite() && (1.0..=10.0).contains(n)) =>
+        {
             Ok(Dispersion::Channels([r, g, b]))
         }
         _ => Err(format!(

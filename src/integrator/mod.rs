@@ -108,8 +108,8 @@ pub fn dispersion_notes(scene: &Scene, integrator: Integrator) -> Vec<Notice> {
              are not traced through media)"
         )),
         Integrator::Path => Notice::Note(
-            "dispersion: paths are split to one wavelength at dispersive glass; light \
-             subpaths (caustics) are off"
+            "dispersion: a path is split to one wavelength (or one RGB channel) at \
+             the first dispersive glass it meets; light subpaths (caustics) are off"
                 .to_string(),
         ),
         other => Notice::Warning(format!(

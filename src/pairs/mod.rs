@@ -196,6 +196,12 @@ mod tests {
             Path::new("/r/repo/a/renders/x__pt.png")
         );
         assert_eq!(pairs[0].slug(), "repo-a__x__pt");
+        assert!(!pairs[0].command_line_dispersion());
+        let flagged = Pair {
+            render: "renders/dispersion__pt_dispersion.png".into(),
+            ..pairs[0].clone()
+        };
+        assert!(flagged.command_line_dispersion());
     }
 
     #[test]

@@ -1,11 +1,11 @@
 //! Build stage: syntax tree -> `Scene` (dialects, names, files, validation).
 
 mod camera;
-pub mod dispersion;
 mod cursor;
 mod degenerate;
 mod descriptor;
 mod dialect;
+pub mod dispersion;
 mod lights;
 mod lobes;
 mod material;
