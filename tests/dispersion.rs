@@ -50,7 +50,8 @@ fn refract(set: &LobeSet, d: Vec3, normal: Vec3, entering: bool, spectrum: &Path
     let wo = -d;
     let bsdf = Bsdf::new(set, Color::WHITE, &normal, entering, normal.dot(&wo), RULES);
     let dispersion = bsdf.dispersion().expect("a dispersive glass");
-    let bsdf = bsdf.with_ior(dispersion.ior(spectrum));
+    let set = bsdf.set().with_ior(dispersion.ior(spectrum));
+    let bsdf = bsdf.with_set(&set);
     // uc near 1 takes the refraction (reflection has probability R).
     let sample = bsdf
         .sample(&wo, 1.0 - 1e-9, [0.5, 0.5])

@@ -160,6 +160,17 @@ impl LobeSet {
         self.lobes.len()
     }
 
+    /// The same lobes with dielectrics of index `ior` inside (the index of
+    /// the material's dispersion at a path's wavelength); no allocation.
+    pub fn with_ior(&self, ior: f64) -> LobeSet {
+        let mut set = self.clone();
+        set.ior = ior;
+        for lobe in &mut set.lobes {
+            lobe.set_ior(ior);
+        }
+        set
+    }
+
     pub fn is_empty(&self) -> bool {
         self.lobes.is_empty()
     }
@@ -177,9 +188,6 @@ pub struct Bsdf<'a> {
     rules: Rules,
     /// The outgoing direction's cosine (for angle-dependent weights).
     cos_o: f64,
-    /// The index of the dielectric lobes for the path's wavelength
-    /// (`None`: the material's).
-    ior: Option<f64>,
 }
 
 /// The weights and probabilities of the lobes at one hit.
@@ -209,7 +217,6 @@ impl<'a> Bsdf<'a> {
             entering,
             rules,
             cos_o,
-            ior: None,
         }
     }
 
@@ -220,14 +227,24 @@ impl<'a> Bsdf<'a> {
         self.set.dispersion
     }
 
-    /// The same BSDF with dielectric lobes of index `ior` (the index of
-    /// the material's dispersion at the path's wavelength).
+    /// The same BSDF over `set` (its lobe set with another index, see
+    /// [`LobeSet::with_ior`]).
     #[inline]
-    pub fn with_ior(self, ior: f64) -> Bsdf<'a> {
+    pub fn with_set<'b>(&self, set: &'b LobeSet) -> Bsdf<'b> {
         Bsdf {
-            ior: Some(ior),
-            ..self
+            set,
+            color: self.color,
+            normal: self.normal,
+            entering: self.entering,
+            rules: self.rules,
+            cos_o: self.cos_o,
         }
+    }
+
+    /// Its lobe set.
+    #[inline]
+    pub fn set(&self) -> &'a LobeSet {
+        self.set
     }
 
     /// Runs `f` with the lobes' weights and probabilities: the set's when
@@ -289,9 +306,6 @@ impl<'a> Bsdf<'a> {
         let mut lobe = self.set.lobes[i];
         if self.set.tinted[i] {
             lobe.set_tint(self.color);
-        }
-        if let Some(ior) = self.ior {
-            lobe.set_ior(ior);
         }
         let fresnel = self.set.follows_rules[i].then_some(self.rules.fresnel);
         lobe.set_side(self.entering, fresnel, self.rules.glass);

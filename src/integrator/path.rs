@@ -153,6 +153,8 @@ pub fn radiance(
             break;
         }
         let wo = -ray.direction;
+        // The lobes at the path's wavelength, when they depend on it.
+        let dispersed;
         let mut bsdf = bsdf_at(view, &at, &wo, GlassChoice::Fresnel);
         if bsdf.is_black() {
             break;
@@ -161,7 +163,8 @@ pub fn radiance(
             if spectrum.is_rgb() {
                 spectrum.split(&dispersion, sampler.next_f64(), &mut throughput);
             }
-            bsdf = bsdf.with_ior(dispersion.ior(&spectrum));
+            dispersed = bsdf.set().with_ior(dispersion.ior(&spectrum));
+            bsdf = bsdf.with_set(&dispersed);
         }
         result += throughput * spectrum.factor(pa1_lights(view, &at, &bsdf, &wo));
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
