@@ -10,6 +10,7 @@
 //! light is a point light times `max(0, cos)^exponent` of the angle between
 //! its direction and the way to the lit point (cyy's law, no cut-off).
 
+use crate::spectral::PathSpectrum;
 use std::f64::consts::PI;
 
 use crate::bsdf::Bsdf;
@@ -38,9 +39,17 @@ pub fn direct_lights(scene: &Scene, rule: PointLights) -> &[Light] {
     if has_emitter { &[] } else { &scene.lights }
 }
 
-/// Radiance reflected towards `wo` from the point and directional lights
+/// Radiance reflected towards `wo` from the point and directional lights,
+/// the light's colour and the BSDF each as the path's `spectrum` sees them
 /// (the caller multiplies by the path throughput).
-pub fn direct(world: &World, lights: &[Light], at: &Shading, bsdf: &Bsdf, wo: &Vec3) -> Color {
+pub fn direct(
+    world: &World,
+    lights: &[Light],
+    at: &Shading,
+    bsdf: &Bsdf,
+    wo: &Vec3,
+    spectrum: &PathSpectrum,
+) -> Color {
     let mut sum = Color::BLACK;
     for light in lights {
         let Some(LightRay {
@@ -63,7 +72,7 @@ pub fn direct(world: &World, lights: &[Light], at: &Shading, bsdf: &Bsdf, wo: &V
         if world.occluded(&shadow, 0.0, distance * SHADOW_REACH) {
             continue;
         }
-        sum += reflected * color * PI;
+        sum += spectrum.factor(reflected) * spectrum.factor(color) * PI;
     }
     sum
 }

@@ -29,7 +29,7 @@
 //! their MIS weights are the cosine's). The PA1 point and directional
 //! lights are added at every vertex, as the original does.
 
-use crate::bsdf::{Bsdf, GlassChoice};
+use crate::bsdf::{Bsdf, GlassChoice, LobeSet};
 use crate::color::Color;
 use crate::look::Miss;
 use crate::math::{Point3, Ray, Vec3};
@@ -159,14 +159,11 @@ pub fn radiance(
         if bsdf.is_black() {
             break;
         }
-        if let Some(dispersion) = bsdf.dispersion() {
-            if spectrum.is_rgb() {
-                spectrum.split(&dispersion, sampler.next_f64(), &mut throughput);
-            }
-            dispersed = bsdf.set().with_ior(dispersion.ior(&spectrum));
+        if bsdf.dispersion().is_some() {
+            dispersed = disperse(&bsdf, &mut spectrum, &mut throughput, sampler);
             bsdf = bsdf.with_set(&dispersed);
         }
-        result += throughput * spectrum.factor(pa1_lights(view, &at, &bsdf, &wo));
+        result += throughput * pa1_lights(view, &at, &bsdf, &wo, &spectrum);
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
             break;
         };
@@ -265,6 +262,25 @@ fn count_chain_vertex(track: &mut Option<CausticTrack>) {
     if let Some(track) = track {
         track.chain += 1;
     }
+}
+
+/// The lobes of `bsdf` (dispersive) at the path's wavelength, splitting
+/// an RGB path first; kept out of the loop, which RGB paths run.
+#[cold]
+#[inline(never)]
+fn disperse(
+    bsdf: &Bsdf,
+    spectrum: &mut PathSpectrum,
+    throughput: &mut Color,
+    sampler: &mut Sampler,
+) -> LobeSet {
+    let Some(dispersion) = bsdf.dispersion() else {
+        return bsdf.set().clone();
+    };
+    if spectrum.is_rgb() {
+        spectrum.split(&dispersion, sampler.next_f64(), throughput);
+    }
+    bsdf.set().with_ior(dispersion.ior(spectrum))
 }
 
 /// What a ray of a split path that finds nothing adds: the background as
