@@ -171,7 +171,14 @@ mod tests {
         set.push(Lobe::Lambert(lambert), 1.0, false);
         let rules = Rules::default();
         let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, wo.z, rules);
-        let diffuse_only = direct(&world, std::slice::from_ref(&light), &at, &bsdf, &wo);
+        let diffuse_only = direct(
+            &world,
+            std::slice::from_ref(&light),
+            &at,
+            &bsdf,
+            &wo,
+            &PathSpectrum::Rgb,
+        );
         // albedo * color * cos, the framework's term.
         assert!((diffuse_only.r - kd * 2.0 * 0.8).abs() < 1e-12);
         let phong = Phong {
@@ -180,7 +187,7 @@ mod tests {
         };
         set.push(Lobe::Phong(phong), 1.0, false);
         let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, wo.z, rules);
-        let with_highlight = direct(&world, &[light], &at, &bsdf, &wo);
+        let with_highlight = direct(&world, &[light], &at, &bsdf, &wo, &PathSpectrum::Rgb);
         // wo is the mirror of the light direction: cos(alpha) = 1.
         let highlight = ks * (n + 2.0) / 2.0 * 0.8 * 2.0;
         assert!((with_highlight.r - diffuse_only.r - highlight).abs() < 1e-9);
@@ -217,7 +224,7 @@ mod tests {
                 color: Color::gray(3.0),
                 exponent,
             };
-            direct(&world, &[spot], &at, &bsdf, &wo).r
+            direct(&world, &[spot], &at, &bsdf, &wo, &PathSpectrum::Rgb).r
         };
         let point = direct(
             &world,
@@ -228,6 +235,7 @@ mod tests {
             &at,
             &bsdf,
             &wo,
+            &PathSpectrum::Rgb,
         )
         .r;
         assert!(
