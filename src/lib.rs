@@ -39,6 +39,7 @@ pub mod sampler;
 pub mod sampling;
 pub mod scene;
 pub mod shading;
+pub mod spectral;
 pub mod subpixel;
 pub mod surface_maps;
 pub mod texture;

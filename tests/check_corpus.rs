@@ -86,6 +86,10 @@ fn content_facts() {
         }
     });
     assert_eq!(largest, 100_000);
+    // Cambrian's glass bunny disperses (its camera's flag and `cauchy`).
+    let cambrian = shared.join("reference/cambrian-pathtracer");
+    let bunny = load(&cambrian.join("testcases/bunny_only.txt"), &cambrian);
+    assert!(bunny.has_dispersion());
 }
 
 /// Fields that are read and not rendered: each must warn at its own line
@@ -101,8 +105,6 @@ const NOT_RENDERED: &[&str] = &[
     "ambientColor",
     "enableReflect",
     "enableRefract",
-    "cauchy",
-    "dispersion",
     "mist",
     "tStart",
     "tEnd",

@@ -125,6 +125,11 @@ impl LobeSet {
             };
             // cav's glass only refracts: its reflection is the conductor.
             set.push_slot(lobe, refract, true, !angular);
+            let pushed = matches!(
+                set.lobes.last(),
+                Some(Lobe::Dielectric(_) | Lobe::RoughDielectric(_))
+            );
+            set.dispersion = material.dispersion.filter(|_| pushed);
         }
         if let Some(phong) = material.phong.filter(|_| look.phong) {
             let lobe = Phong {

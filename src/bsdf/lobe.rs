@@ -130,6 +130,17 @@ impl Lobe {
         }
     }
 
+    /// A dielectric (given as seen from outside) of index `ior` inside;
+    /// other lobes have no index.
+    #[inline]
+    pub fn set_ior(&mut self, ior: f64) {
+        match self {
+            Lobe::Dielectric(d) => d.eta_below = ior,
+            Lobe::RoughDielectric(d) => d.eta_below = ior,
+            _ => {}
+        }
+    }
+
     /// A dielectric given as seen from outside, seen from the side of the
     /// outgoing direction (`entering`: the outside), with the rendering's
     /// Fresnel term (`None`: its own) and glass choice. Other lobes are

@@ -48,6 +48,7 @@ use arrayvec::ArrayVec;
 use crate::color::Color;
 use crate::math::{Vec3, orthonormal_basis};
 use crate::scene::model::ConductorFresnel;
+use crate::spectral::Dispersion;
 
 pub use build::{Rules, lobe_sets};
 pub use dielectric::GlassChoice;
@@ -93,6 +94,8 @@ pub struct LobeSet {
     /// cav's weights of lobes 0, 1, 2 (diffuse, conductor, dielectric).
     angular: Option<crate::scene::model::AngularWeights>,
     ior: f64,
+    /// The dispersion of its dielectric lobe (none without one).
+    dispersion: Option<Dispersion>,
     smooth_lobes: usize,
     only_lambert: bool,
     /// One Lambert lobe tinted by the hit's colour, nothing else.
@@ -158,6 +161,17 @@ impl LobeSet {
         self.lobes.len()
     }
 
+    /// The same lobes with dielectrics of index `ior` inside (the index of
+    /// the material's dispersion at a path's wavelength); no allocation.
+    pub fn with_ior(&self, ior: f64) -> LobeSet {
+        let mut set = self.clone();
+        set.ior = ior;
+        for lobe in &mut set.lobes {
+            lobe.set_ior(ior);
+        }
+        set
+    }
+
     pub fn is_empty(&self) -> bool {
         self.lobes.is_empty()
     }
@@ -205,6 +219,33 @@ impl<'a> Bsdf<'a> {
             rules,
             cos_o,
         }
+    }
+
+    /// How the index of its dielectric lobe depends on the wavelength:
+    /// where a path must be split (see [`crate::spectral`]).
+    #[inline]
+    pub fn dispersion(&self) -> Option<Dispersion> {
+        self.set.dispersion
+    }
+
+    /// The same BSDF over `set` (its lobe set with another index, see
+    /// [`LobeSet::with_ior`]).
+    #[inline]
+    pub fn with_set<'b>(&self, set: &'b LobeSet) -> Bsdf<'b> {
+        Bsdf {
+            set,
+            color: self.color,
+            normal: self.normal,
+            entering: self.entering,
+            rules: self.rules,
+            cos_o: self.cos_o,
+        }
+    }
+
+    /// Its lobe set.
+    #[inline]
+    pub fn set(&self) -> &'a LobeSet {
+        self.set
     }
 
     /// Runs `f` with the lobes' weights and probabilities: the set's when

@@ -21,6 +21,7 @@ use pathtracer::pairs::report::{Figures, Row, RunDescription, csv, html, summary
 use pathtracer::pairs::{Confidence, Pair, read_pairs, render_size};
 use pathtracer::render::render;
 use pathtracer::scene::{LoadOptions, load_scene};
+use pathtracer::spectral::Dispersion;
 
 use super::SamplingOptions;
 
@@ -232,6 +233,9 @@ impl PairJob<'_> {
                 return self.failed(seconds, has_theirs, None, format!("does not load: {error}"));
             }
         };
+        if self.pair.command_line_dispersion() {
+            super::apply_dispersion(&mut scene, Dispersion::YUZC19);
+        }
         let (look, _) = self.sampling.look(&scene);
         let dialect = Some((scene.dialect.name().to_string(), look.name.to_string()));
         if !scene.warnings.is_empty() {

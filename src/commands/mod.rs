@@ -29,8 +29,10 @@ use pathtracer::limits::{MAX_IMAGE_SIDE, MAX_PATH_DEPTH, MemoryBudget};
 use pathtracer::look::{Look, PixelSampling};
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
+use pathtracer::scene::build::dispersion::apply_channels;
 use pathtracer::scene::model::{Dialect, Scene};
 use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
+use pathtracer::spectral::Dispersion;
 use pathtracer::world::World;
 
 #[derive(Args, Clone)]
@@ -53,6 +55,12 @@ pub struct SceneOptions {
     /// bytes or a size with a binary unit (`8G`, `512M`); default 4G.
     #[arg(long, value_parser = parse_memory_budget)]
     pub max_memory: Option<MemoryBudget>,
+    /// Give every refractive material one index per RGB channel: `yuzc19`
+    /// (that renderer's `dispersion` command-line flag: 1.6473, 1.6527,
+    /// 1.6726) or three indices `R,G,B`. Each path is split to one channel
+    /// at the first such glass it meets.
+    #[arg(long, value_parser = parse_dispersion)]
+    pub dispersion: Option<Dispersion>,
 }
 
 impl SceneOptions {
@@ -301,13 +309,54 @@ fn parse_dialect(name: &str) -> Result<Dialect, String> {
 }
 
 /// Loads a scene for rendering, printing its warnings (fields that are
-/// not rendered among them).
+/// not rendered among them), with `--dispersion` applied.
 pub fn load_for_render(path: &Path, options: &SceneOptions) -> Result<Scene, String> {
-    let scene = load_scene(path, &options.load_options()).map_err(|e| e.to_string())?;
+    let mut scene = load_scene(path, &options.load_options()).map_err(|e| e.to_string())?;
     for warning in &scene.warnings {
         eprintln!("warning: {warning}");
     }
+    if let Some(dispersion) = options.dispersion {
+        apply_dispersion(&mut scene, dispersion);
+    }
     Ok(scene)
+}
+
+/// Gives the refractive materials of `scene` the indices of `--dispersion`
+/// (a warning when there are none). The scene's hash changes with them, so
+/// that parts of renders with and without the flag do not merge.
+pub fn apply_dispersion(scene: &mut Scene, dispersion: Dispersion) {
+    if apply_channels(&mut scene.materials, dispersion) == 0 {
+        eprintln!("warning: '--dispersion' is not rendered: no material refracts");
+        return;
+    }
+    if let Dispersion::Channels(indices) = dispersion {
+        let mut bytes = scene.load.source_hash.to_le_bytes().to_vec();
+        bytes.extend(indices.iter().flat_map(|index| index.to_le_bytes()));
+        scene.load.source_hash = pathtracer::scene::fnv1a(&bytes);
+    }
+}
+
+fn parse_dispersion(text: &str) -> Result<Dispersion, String> {
+    if text == "yuzc19" {
+        return Ok(Dispersion::YUZC19);
+    }
+    let indices: Vec<f64> = text
+        .split(',')
+        .map(|v| v.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| format!("'{text}': expected 'yuzc19' or three indices R,G,B"))?;
+    match indices[..] {
+        [r, g, b]
+            if [r, g, b]
+                .iter()
+                .all(|n| n.is_finite() && (1.0..=10.0).contains(n)) =>
+        {
+            Ok(Dispersion::Channels([r, g, b]))
+        }
+        _ => Err(format!(
+            "'{text}': expected 'yuzc19' or three indices R,G,B from 1 to 10"
+        )),
+    }
 }
 
 /// `scene` adapted to the look of `settings` (see [`Look::adapt`]) and its
@@ -318,6 +367,9 @@ pub fn prepare(scene: &mut Scene, settings: &RenderSettings) -> World {
     settings.look.adapt(scene);
     for note in pathtracer::integrator::media_notes(scene, settings.integrator) {
         eprintln!("note: {note}");
+    }
+    for notice in pathtracer::integrator::dispersion_notes(scene, settings.integrator) {
+        eprintln!("{notice}");
     }
     World::build_with(scene, settings.look.one_sided_planes)
 }

@@ -10,6 +10,7 @@
 //! light is a point light times `max(0, cos)^exponent` of the angle between
 //! its direction and the way to the lit point (cyy's law, no cut-off).
 
+use crate::spectral::PathSpectrum;
 use std::f64::consts::PI;
 
 use crate::bsdf::Bsdf;
@@ -38,9 +39,17 @@ pub fn direct_lights(scene: &Scene, rule: PointLights) -> &[Light] {
     if has_emitter { &[] } else { &scene.lights }
 }
 
-/// Radiance reflected towards `wo` from the point and directional lights
+/// Radiance reflected towards `wo` from the point and directional lights,
+/// the light's colour and the BSDF each as the path's `spectrum` sees them
 /// (the caller multiplies by the path throughput).
-pub fn direct(world: &World, lights: &[Light], at: &Shading, bsdf: &Bsdf, wo: &Vec3) -> Color {
+pub fn direct(
+    world: &World,
+    lights: &[Light],
+    at: &Shading,
+    bsdf: &Bsdf,
+    wo: &Vec3,
+    spectrum: &PathSpectrum,
+) -> Color {
     let mut sum = Color::BLACK;
     for light in lights {
         let Some(LightRay {
@@ -63,7 +72,7 @@ pub fn direct(world: &World, lights: &[Light], at: &Shading, bsdf: &Bsdf, wo: &V
         if world.occluded(&shadow, 0.0, distance * SHADOW_REACH) {
             continue;
         }
-        sum += reflected * color * PI;
+        sum += spectrum.factor(reflected) * spectrum.factor(color) * PI;
     }
     sum
 }
@@ -162,7 +171,14 @@ mod tests {
         set.push(Lobe::Lambert(lambert), 1.0, false);
         let rules = Rules::default();
         let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, wo.z, rules);
-        let diffuse_only = direct(&world, std::slice::from_ref(&light), &at, &bsdf, &wo);
+        let diffuse_only = direct(
+            &world,
+            std::slice::from_ref(&light),
+            &at,
+            &bsdf,
+            &wo,
+            &PathSpectrum::Rgb,
+        );
         // albedo * color * cos, the framework's term.
         assert!((diffuse_only.r - kd * 2.0 * 0.8).abs() < 1e-12);
         let phong = Phong {
@@ -171,7 +187,7 @@ mod tests {
         };
         set.push(Lobe::Phong(phong), 1.0, false);
         let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, wo.z, rules);
-        let with_highlight = direct(&world, &[light], &at, &bsdf, &wo);
+        let with_highlight = direct(&world, &[light], &at, &bsdf, &wo, &PathSpectrum::Rgb);
         // wo is the mirror of the light direction: cos(alpha) = 1.
         let highlight = ks * (n + 2.0) / 2.0 * 0.8 * 2.0;
         assert!((with_highlight.r - diffuse_only.r - highlight).abs() < 1e-9);
@@ -208,7 +224,7 @@ mod tests {
                 color: Color::gray(3.0),
                 exponent,
             };
-            direct(&world, &[spot], &at, &bsdf, &wo).r
+            direct(&world, &[spot], &at, &bsdf, &wo, &PathSpectrum::Rgb).r
         };
         let point = direct(
             &world,
@@ -219,6 +235,7 @@ mod tests {
             &at,
             &bsdf,
             &wo,
+            &PathSpectrum::Rgb,
         )
         .r;
         assert!(

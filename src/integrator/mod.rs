@@ -92,6 +92,52 @@ pub fn media_notes(scene: &Scene, integrator: Integrator) -> Vec<String> {
     notes
 }
 
+/// What a render of `scene` with `integrator` says about its dispersive
+/// materials: warnings where the estimator renders them with one index
+/// (the original estimator, ray casting, and the path integrator of scenes
+/// with media, which stays RGB), a note that the path integrator's light
+/// subpaths are off.
+pub fn dispersion_notes(scene: &Scene, integrator: Integrator) -> Vec<Notice> {
+    if !scene.has_dispersion() {
+        return Vec::new();
+    }
+    let single = "renders dispersive materials with one index for all wavelengths";
+    let notice = match integrator {
+        Integrator::Path if scene.has_media() => Notice::Warning(format!(
+            "with participating media the path integrator {single} (spectral paths \
+             are not traced through media)"
+        )),
+        Integrator::Path => Notice::Note(
+            "dispersion: a path is split to one wavelength (or one RGB channel) at \
+             the first dispersive glass it meets; light subpaths (caustics) are off"
+                .to_string(),
+        ),
+        other => Notice::Warning(format!(
+            "the {} estimator {single}: '--integrator path' renders the dispersion",
+            other.name()
+        )),
+    };
+    vec![notice]
+}
+
+/// A message about a render's settings, printed before it starts.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Notice {
+    /// How something is rendered.
+    Note(String),
+    /// Something in the scene that is not rendered.
+    Warning(String),
+}
+
+impl std::fmt::Display for Notice {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Notice::Note(text) => write!(f, "note: {text}"),
+            Notice::Warning(text) => write!(f, "warning: {text}"),
+        }
+    }
+}
+
 /// Where a camera ray comes from: its pixel and lens sample (what light
 /// tracing's MIS weights need to know of the camera's side).
 #[derive(Clone, Copy, Debug, Default)]
@@ -177,8 +223,11 @@ impl<'a> SceneView<'a> {
             // One-sided planes make visibility depend on direction, which
             // light subpaths (traced from the light's side) cannot honour.
             // Light subpaths do not account for transmittance (see `volpath`).
+            // Light subpaths carry RGB: they would cross dispersive glass
+            // with one index (see `dispersion_notes`).
             light_paths: !look.one_sided_planes
                 && !media
+                && !scene.has_dispersion()
                 && caustics::prepare(scene, world, &mut emitters),
             media,
             emitters,

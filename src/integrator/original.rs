@@ -13,6 +13,7 @@ use crate::look::RayOrigins;
 use crate::math::Ray;
 use crate::sampler::Sampler;
 use crate::shading::Shading;
+use crate::spectral::PathSpectrum;
 
 use super::SceneView;
 use super::scatter::{bsdf_at, miss, pa1_lights, sample};
@@ -40,7 +41,7 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
         if bsdf.is_black() {
             break;
         }
-        result += throughput * pa1_lights(view, &at, &bsdf, &wo);
+        result += throughput * pa1_lights(view, &at, &bsdf, &wo, &PathSpectrum::Rgb);
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
             break;
         };

@@ -29,11 +29,13 @@
 //! their MIS weights are the cosine's). The PA1 point and directional
 //! lights are added at every vertex, as the original does.
 
-use crate::bsdf::{Bsdf, GlassChoice};
+use crate::bsdf::{Bsdf, GlassChoice, LobeSet};
 use crate::color::Color;
+use crate::look::Miss;
 use crate::math::{Point3, Ray, Vec3};
 use crate::sampler::Sampler;
 use crate::shading::Shading;
+use crate::spectral::PathSpectrum;
 
 use super::caustics::{self, CausticVertex};
 use super::scatter::{bsdf_at, emitter_choice, miss, pa1_lights, sample};
@@ -106,6 +108,8 @@ pub fn radiance(
     // `None`: the ray came from the camera or a delta lobe (weight 1).
     let mut origin: Option<SmoothOrigin> = None;
     let mut track: Option<CausticTrack> = None;
+    // RGB until a dispersive dielectric splits the path (see `spectral`).
+    let mut spectrum = PathSpectrum::Rgb;
     // The light subpath of the caustic connections; every camera sample
     // traces one (light tracing divides by their number).
     let light_path: Option<CausticVertex> = if view.light_paths {
@@ -116,7 +120,11 @@ pub fn radiance(
     };
     loop {
         let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
-            result += miss(view, depth, throughput);
+            result += if spectrum.is_rgb() {
+                miss(view, depth, throughput)
+            } else {
+                miss_split(view, depth, throughput, &spectrum)
+            };
             break;
         };
         let at = Shading::new(view.scene, &hit, &ray);
@@ -138,18 +146,24 @@ pub fn radiance(
                     power_heuristic(from.pdf, light_pdf)
                 }
             };
-            result += throughput * material.emission * weight;
+            result += throughput * spectrum.factor(material.emission) * weight;
         }
         depth += 1;
         if depth > view.max_depth {
             break;
         }
         let wo = -ray.direction;
-        let bsdf = bsdf_at(view, &at, &wo, GlassChoice::Fresnel);
+        // The lobes at the path's wavelength, when they depend on it.
+        let dispersed;
+        let mut bsdf = bsdf_at(view, &at, &wo, GlassChoice::Fresnel);
         if bsdf.is_black() {
             break;
         }
-        result += throughput * pa1_lights(view, &at, &bsdf, &wo);
+        if bsdf.dispersion().is_some() {
+            dispersed = disperse(&bsdf, &mut spectrum, &mut throughput, sampler);
+            bsdf = bsdf.with_set(&dispersed);
+        }
+        result += throughput * pa1_lights(view, &at, &bsdf, &wo, &spectrum);
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
             break;
         };
@@ -160,7 +174,8 @@ pub fn radiance(
             count_chain_vertex(&mut track);
         } else {
             let smooth = bsdf.smooth_probability();
-            result += throughput * light_sample(view, &at, &bsdf, &wo, smooth, ray.time, sampler);
+            result += throughput
+                * light_sample(view, &at, &bsdf, &wo, smooth, ray.time, sampler, &spectrum);
             let lambert = bsdf.lambert();
             if let Some(f) = lambert
                 && let Some(y) = light_path.filter(|y| depth + 1 + y.chain <= view.max_depth)
@@ -179,14 +194,14 @@ pub fn radiance(
                 lambert: lambert.is_some(),
             });
         }
-        throughput *= scattered.weight;
-        if throughput.is_black() {
+        throughput *= spectrum.factor(scattered.weight);
+        if spectrum.is_dark(&throughput) {
             break;
         }
         if depth >= ROULETTE_DEPTH {
             // The square root keeps dim paths alive longer than the plain
             // throughput would (10% better efficiency on the report scenes).
-            let survival = throughput.max_component().sqrt().min(1.0);
+            let survival = spectrum.roulette_level(&throughput).sqrt().min(1.0);
             if survival < 1.0 {
                 if sampler.next_f64() >= survival {
                     break;
@@ -249,10 +264,46 @@ fn count_chain_vertex(track: &mut Option<CausticTrack>) {
     }
 }
 
+/// The lobes of `bsdf` (dispersive) at the path's wavelength, splitting
+/// an RGB path first; kept out of the loop, which RGB paths run.
+#[cold]
+#[inline(never)]
+fn disperse(
+    bsdf: &Bsdf,
+    spectrum: &mut PathSpectrum,
+    throughput: &mut Color,
+    sampler: &mut Sampler,
+) -> LobeSet {
+    let Some(dispersion) = bsdf.dispersion() else {
+        return bsdf.set().clone();
+    };
+    if spectrum.is_rgb() {
+        spectrum.split(&dispersion, sampler.next_f64(), throughput);
+    }
+    bsdf.set().with_ior(dispersion.ior(spectrum))
+}
+
+/// What a ray of a split path that finds nothing adds: the background as
+/// the path's wavelength or channel sees it.
+fn miss_split(view: &SceneView, depth: u32, throughput: Color, spectrum: &PathSpectrum) -> Color {
+    let background = view.scene.background;
+    match view.look.miss {
+        Miss::Weighted => throughput * spectrum.factor(background),
+        Miss::Unweighted => spectrum.seen(background),
+        // A split path has scattered, so depth > 0.
+        Miss::CameraBackground | Miss::Black => {
+            debug_assert!(depth > 0);
+            Color::BLACK
+        }
+    }
+}
+
 /// One light sample at a vertex that chose a continuous lobe (of total
 /// probability `smooth`), MIS-weighted against BSDF sampling:
-/// `L_e f |cos| / (pdf_light smooth) * w_light`. The caller multiplies by
-/// the throughput.
+/// `L_e f |cos| / (pdf_light smooth) * w_light`, the emission and the BSDF
+/// each as the path's `spectrum` sees them. The caller multiplies by the
+/// throughput.
+#[allow(clippy::too_many_arguments)]
 fn light_sample(
     view: &SceneView,
     at: &Shading,
@@ -261,6 +312,7 @@ fn light_sample(
     smooth: f64,
     time: f64,
     sampler: &mut Sampler,
+    spectrum: &PathSpectrum,
 ) -> Color {
     if view.emitters.is_empty() {
         return Color::BLACK;
@@ -283,7 +335,7 @@ fn light_sample(
     }
     let bsdf_pdf = bsdf.pdf(wo, &light.direction) / smooth;
     let weight = power_heuristic(light.pdf, bsdf_pdf);
-    light.emission * reflected * (weight / (light.pdf * smooth))
+    spectrum.factor(light.emission) * spectrum.factor(reflected) * (weight / (light.pdf * smooth))
 }
 
 /// The power heuristic (exponent 2) for one sample of density `f` against

@@ -8,6 +8,7 @@ use crate::look::Miss;
 use crate::math::Vec3;
 use crate::sampler::Sampler;
 use crate::shading::Shading;
+use crate::spectral::PathSpectrum;
 
 use super::{SceneView, lights};
 
@@ -62,11 +63,17 @@ pub fn emitter_choice(view: &SceneView, sampler: &mut Sampler) -> f64 {
 
 /// Radiance of the PA1 point and directional lights at this vertex (the
 /// caller multiplies by the throughput).
-pub fn pa1_lights(view: &SceneView, at: &Shading, bsdf: &Bsdf, wo: &Vec3) -> Color {
+pub fn pa1_lights(
+    view: &SceneView,
+    at: &Shading,
+    bsdf: &Bsdf,
+    wo: &Vec3,
+    spectrum: &PathSpectrum,
+) -> Color {
     if view.direct_lights.is_empty() {
         Color::BLACK
     } else {
-        lights::direct(view.world, view.direct_lights, at, bsdf, wo)
+        lights::direct(view.world, view.direct_lights, at, bsdf, wo, spectrum)
     }
 }
 

@@ -61,6 +61,15 @@ impl Pair {
         root.join(&self.folder).join(&self.render)
     }
 
+    /// Whether the render was made with its renderer's `dispersion`
+    /// command-line flag: its name ends in `__pt_dispersion` (only
+    /// yuzc19's renderer has such a flag; its `renders/PAIRS.md`).
+    pub fn command_line_dispersion(&self) -> bool {
+        Path::new(&self.render)
+            .file_stem()
+            .is_some_and(|stem| stem.to_string_lossy().ends_with("__pt_dispersion"))
+    }
+
     /// A file-name-safe name for the pair's images: the folder and the
     /// render's name without extension, characters other than ASCII letters,
     /// digits, `.`, `_` and `-` replaced by `-`, e.g.
@@ -187,6 +196,12 @@ mod tests {
             Path::new("/r/repo/a/renders/x__pt.png")
         );
         assert_eq!(pairs[0].slug(), "repo-a__x__pt");
+        assert!(!pairs[0].command_line_dispersion());
+        let flagged = Pair {
+            render: "renders/dispersion__pt_dispersion.png".into(),
+            ..pairs[0].clone()
+        };
+        assert!(flagged.command_line_dispersion());
     }
 
     #[test]

@@ -48,6 +48,12 @@ impl Scene {
         self.medium.is_some() || self.materials.iter().any(|m| m.interior.is_some())
     }
 
+    /// Whether some material's index depends on the wavelength (paths
+    /// through it are split, see [`crate::spectral`]).
+    pub fn has_dispersion(&self) -> bool {
+        self.materials.iter().any(|m| m.dispersion.is_some())
+    }
+
     /// A scene around `root`, for scenes built in code: a pinhole camera at
     /// the origin looking down -z (16x16, the original's field of view), a
     /// black background, no lights, the canonical dialect.

@@ -12,13 +12,23 @@ pub const MAX_PIXELS: u64 = 1 << 28;
 
 const DEFAULT_SIZE: u32 = 512;
 
-/// The camera, and Cambrian's `mist` with where it was written (the
-/// builder turns it into the scene's medium, see [`Mist`]).
+/// What a camera block holds.
+pub struct CameraBlock {
+    pub camera: CameraDesc,
+    /// Cambrian's `mist` with where it was written (the builder turns it
+    /// into the scene's medium, see [`Mist`]).
+    pub mist: Option<(Mist, Location)>,
+    /// Where Cambrian's `dispersion` flag was written (the builder keeps the
+    /// materials' `cauchy` coefficients only with it).
+    pub dispersion: Option<Location>,
+}
+
+/// The camera block.
 pub fn build_camera(
     context: &mut Context,
     block: &Block,
     location: Location,
-) -> Result<(CameraDesc, Option<(Mist, Location)>), SceneError> {
+) -> Result<CameraBlock, SceneError> {
     let name = block.name.as_str();
     let mut center = Point3::zeros();
     let mut direction = Vec3::new(0.0, 0.0, -1.0);
@@ -33,6 +43,7 @@ pub fn build_camera(
     let mut lens_radius = 0.0;
     let mut defocus_angle = None;
     let mut mist = None;
+    let mut dispersion = None;
     let mut cursor = Cursor::of(block);
     while let Some(item) = cursor.next() {
         let Some(key) = item.word() else {
@@ -89,8 +100,14 @@ pub fn build_camera(
                 ))
             }
             "dispersion" => {
-                cursor.take_numbers();
-                context.not_rendered(item.location, key, "one index for all wavelengths")?;
+                if !cursor.take_numbers().is_empty() {
+                    context.not_rendered(
+                        item.location,
+                        "the numbers after 'dispersion'",
+                        "it is a flag",
+                    )?;
+                }
+                dispersion = Some(item.location);
             }
             "lookat" => {
                 cursor.take_numbers();
@@ -175,7 +192,11 @@ pub fn build_camera(
         lens_radius,
         lens_shape,
     };
-    Ok((camera, mist))
+    Ok(CameraBlock {
+        camera,
+        mist,
+        dispersion,
+    })
 }
 
 /// `mist e s b`: two survival rates per unit length in (0, 1] and the

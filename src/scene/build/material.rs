@@ -2,12 +2,14 @@
 
 use crate::color::Color;
 use crate::scene::ast::{Block, ItemKind};
+use crate::scene::build::dispersion::read_cauchy;
 use crate::scene::build::medium::build_medium;
 use crate::scene::build::textures::{MapName, SurfaceMapRef};
 use crate::scene::build::weights::{Fields, Kind, preset, resolve};
 use crate::scene::build::{Context, Cursor};
 use crate::scene::error::{Location, SceneError};
 use crate::scene::model::{AngularWeights, Dialect, Material};
+use crate::spectral::Dispersion;
 use crate::uv_rule::UvRule;
 
 /// A path written in the file, with where it was written.
@@ -25,6 +27,9 @@ pub struct MaterialSpec {
     /// A surface map: a normal map or a height map, which the loader
     /// decides from the key that named it and the image.
     pub surface_map: Option<SurfaceMapRef>,
+    /// Cambrian's `cauchy` and where it was written, until the camera
+    /// says whether it is used (see `dispersion::resolve`).
+    pub dispersion: Option<(Dispersion, Location)>,
 }
 
 impl MaterialSpec {
@@ -33,6 +38,7 @@ impl MaterialSpec {
             material,
             texture: None,
             surface_map: None,
+            dispersion: None,
         }
     }
 }
@@ -88,6 +94,7 @@ fn build_material(
     let mut f = Fields::default();
     let mut interior = None;
     let mut interface = false;
+    let mut dispersion = None;
     let mut cursor = Cursor::of(block);
     while let Some(item) = cursor.next() {
         let Some(key) = item.word() else {
@@ -109,6 +116,10 @@ fn build_material(
             interface = true;
             continue;
         }
+        if key == "cauchy" {
+            read_cauchy(context, &mut cursor, &mut dispersion, item.location)?;
+            continue;
+        }
         read_field(context, &mut cursor, &mut f, key, item.location, name)?;
     }
     let mut spec = resolve(context, f, name, location)?;
@@ -121,6 +132,7 @@ fn build_material(
     }
     spec.material.interior = interior;
     spec.material.interface = interface;
+    spec.dispersion = dispersion;
     Ok(spec)
 }
 
@@ -250,12 +262,12 @@ fn read_field(
             cursor.word(context, key)?;
             context.not_rendered(location, key, "only colour, normal and bump maps are")?;
         }
-        "cauchy" | "dispersion" => {
+        "dispersion" => {
             cursor.take_numbers();
             context.not_rendered(
                 location,
                 key,
-                "no dispersion (one index for all wavelengths)",
+                "a material's dispersion is given by 'cauchy A B'",
             )?;
         }
         "Func" => {

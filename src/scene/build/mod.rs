@@ -5,6 +5,7 @@ mod cursor;
 mod degenerate;
 mod descriptor;
 mod dialect;
+pub mod dispersion;
 mod lights;
 mod lobes;
 mod material;
@@ -193,7 +194,11 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
             "the file has no camera block (PerspectiveCamera)".into(),
         ));
     };
-    let (camera, mist) = camera::build_camera(&mut context, camera_block, camera_location)?;
+    let camera::CameraBlock {
+        camera,
+        mist,
+        dispersion,
+    } = camera::build_camera(&mut context, camera_block, camera_location)?;
     if let Some((mist, at)) = mist {
         if scene_medium.is_some() {
             context.warn(
@@ -211,6 +216,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
     if specs.is_empty() {
         specs.push(material::MaterialSpec::new(Material::default()));
     }
+    dispersion::resolve(&mut context, dispersion, &mut specs)?;
     let mut objects = objects::ObjectBuilder::new(specs.len());
     let mut roots = Vec::new();
     for (block, location) in group_blocks {

@@ -188,5 +188,6 @@ pub fn resolve(
         material,
         texture: f.texture,
         surface_map: f.surface_map,
+        dispersion: None,
     })
 }

@@ -5,6 +5,7 @@
 use crate::checker::Checker;
 use crate::color::Color;
 use crate::medium::Medium;
+use crate::spectral::Dispersion;
 use crate::uv_rule::UvRule;
 
 /// One normalised material: the weights of the original's three lobes
@@ -61,6 +62,10 @@ pub struct Material {
     /// An `interface`: the surface neither scatters nor emits, rays cross
     /// it unchanged (only the medium changes: the boundary of a medium).
     pub interface: bool,
+    /// How the index of its refract lobe depends on the wavelength
+    /// (Cambrian's `cauchy`, yuzc19's `dispersion` flag); `None`: `ior`
+    /// for every wavelength.
+    pub dispersion: Option<Dispersion>,
 }
 
 impl Material {
@@ -86,6 +91,7 @@ impl Material {
         angular_weights: None,
         interior: None,
         interface: false,
+        dispersion: None,
     };
 
     /// Whether some lobe of the material is a perfect mirror or smooth glass
