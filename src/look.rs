@@ -46,6 +46,16 @@ pub enum Estimator {
     BsdfSampling,
 }
 
+/// How a look renders dispersive glass.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DispersionSensor {
+    /// Spectral transport read by a sensor (`spectral`): the physical image.
+    Spectral,
+    /// Cambrian's: one wavelength per camera sample, the sample's RGB
+    /// radiance times Cambrian's colour of it (`spectral::cambrian`).
+    Cambrian,
+}
+
 /// Where a ray that leaves a surface starts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RayOrigins {
@@ -159,6 +169,7 @@ pub struct Look {
     pub osb_glossy: bool,
     /// The lens shape the renderer gives every camera (`None`: the scene's).
     pub lens_shape: Option<LensShape>,
+    pub dispersion_sensor: DispersionSensor,
 }
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -184,6 +195,7 @@ impl Look {
         ray_origins: RayOrigins::Offset,
         osb_glossy: false,
         lens_shape: None,
+        dispersion_sensor: DispersionSensor::Spectral,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -213,6 +225,7 @@ impl Look {
         phong_lobes: false,
         texture_times_color: true,
         texture_frames: TextureFrames::Cambrian,
+        dispersion_sensor: DispersionSensor::Cambrian,
         ..Look::ORIGINAL
     };
 

@@ -12,7 +12,7 @@ use crate::bsdf::{LobeSet, lobe_sets};
 use crate::camera::Camera;
 use crate::color::Color;
 use crate::lights::Emitters;
-use crate::look::Look;
+use crate::look::{DispersionSensor, Look};
 use crate::math::Ray;
 use crate::sampler::Sampler;
 use crate::scene::model::{Light, Material, Scene};
@@ -205,6 +205,9 @@ pub struct SceneView<'a> {
     pub lobe_sets: Vec<LobeSet>,
     /// The lobes of the default material (for a hit without one).
     pub default_lobes: LobeSet,
+    /// Camera samples draw Cambrian's wavelength (its look, in a scene
+    /// with dispersion).
+    pub cambrian_wavelengths: bool,
 }
 
 impl<'a> SceneView<'a> {
@@ -236,6 +239,8 @@ impl<'a> SceneView<'a> {
             look,
             lobe_sets: lobe_sets(&scene.materials, look.lobes()),
             default_lobes: LobeSet::from_material(&Material::DEFAULT, look.lobes()),
+            cambrian_wavelengths: look.dispersion_sensor == DispersionSensor::Cambrian
+                && scene.has_dispersion(),
         }
     }
 }

@@ -103,13 +103,17 @@ pub fn radiance(
     splats: &mut Splats,
 ) -> Color {
     let mut result = Color::BLACK;
-    let mut throughput = Color::WHITE;
+    // RGB until a dispersive dielectric splits the path (see `spectral`),
+    // or one wavelength from the start in Cambrian's look.
+    let (mut spectrum, mut throughput) = if view.cambrian_wavelengths {
+        PathSpectrum::cambrian(sampler.next_f64(), sampler.next_f64())
+    } else {
+        (PathSpectrum::Rgb, Color::WHITE)
+    };
     let mut depth = 0;
     // `None`: the ray came from the camera or a delta lobe (weight 1).
     let mut origin: Option<SmoothOrigin> = None;
     let mut track: Option<CausticTrack> = None;
-    // RGB until a dispersive dielectric splits the path (see `spectral`).
-    let mut spectrum = PathSpectrum::Rgb;
     // The light subpath of the caustic connections; every camera sample
     // traces one (light tracing divides by their number).
     let light_path: Option<CausticVertex> = if view.light_paths {

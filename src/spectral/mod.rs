@@ -12,6 +12,7 @@
 //! - [`basis`]: colours as spectra and the sensor that reads them back.
 
 pub mod basis;
+pub mod cambrian;
 
 #[cfg(test)]
 mod tests;
@@ -55,6 +56,20 @@ impl Dispersion {
             (Dispersion::Cauchy { a, b }, PathSpectrum::Channel(k)) => {
                 Dispersion::cauchy(a, b, CHANNEL_NM[k])
             }
+            (Dispersion::Cauchy { a, b }, PathSpectrum::Tinted { nm }) => {
+                Dispersion::cauchy(a, b, nm)
+            }
+            (Dispersion::Channels(n), PathSpectrum::Tinted { nm }) => {
+                // The channel Cambrian's colour of that wavelength leans to.
+                let w = cambrian::weight(nm);
+                n[if w.r >= w.g && w.r >= w.b {
+                    0
+                } else if w.g >= w.b {
+                    1
+                } else {
+                    2
+                }]
+            }
             (Dispersion::Cauchy { a, b }, PathSpectrum::Rgb) => {
                 Dispersion::cauchy(a, b, CHANNEL_NM[1])
             }
@@ -94,6 +109,10 @@ pub enum PathSpectrum {
         /// throughput) is worth on the film.
         sensor: Color,
     },
+    /// Cambrian's look: one wavelength `nm` for the whole camera sample,
+    /// the throughput started at its RGB weight ([`cambrian`]); colours
+    /// multiply channel by channel, as Cambrian's do.
+    Tinted { nm: f64 },
 }
 
 impl PathSpectrum {
@@ -153,7 +172,15 @@ impl PathSpectrum {
             PathSpectrum::Wavelength { basis, sensor, .. } => {
                 *sensor * basis::spectrum_at(basis, c)
             }
+            PathSpectrum::Tinted { nm } => c * cambrian::weight(*nm),
         }
+    }
+
+    /// A camera sample in Cambrian's look with dispersion: its wavelength
+    /// from uniform numbers `u` and `v`, and the throughput it starts with.
+    pub fn cambrian(u: f64, v: f64) -> (PathSpectrum, Color) {
+        let nm = cambrian::wavelength(u, v);
+        (PathSpectrum::Tinted { nm }, cambrian::weight(nm))
     }
 
     /// Whether `throughput` can bring nothing more (on a wavelength path

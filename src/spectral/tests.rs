@@ -85,3 +85,24 @@ fn cauchy_indices_fall_with_the_wavelength() {
     assert!(at(400.0) > at(500.0) && at(500.0) > at(700.0));
     assert_eq!(Dispersion::YUZC19.ior(&PathSpectrum::Channel(2)), 1.6726);
 }
+
+#[test]
+fn a_cambrian_camera_sample_keeps_its_wavelength_and_multiplies_as_rgb() {
+    let (spectrum, throughput) = PathSpectrum::cambrian(0.5, 0.5);
+    let nm = 380.0 + 0.5 * 370.0;
+    assert_eq!(spectrum, PathSpectrum::Tinted { nm });
+    assert_eq!(throughput, cambrian::weight(nm));
+    // The glass sees Cauchy's index there; colours multiply channel by
+    // channel; a split never replaces the camera's wavelength.
+    let glass = Dispersion::Cauchy {
+        a: 2.385,
+        b: 0.0117,
+    };
+    assert_eq!(glass.ior(&spectrum), Dispersion::cauchy(2.385, 0.0117, nm));
+    let c = Color::new(0.2, 0.4, 0.8);
+    assert_eq!(spectrum.factor(c), c);
+    let mut split = spectrum;
+    let mut t = throughput;
+    split.split(&glass, 0.9, &mut t);
+    assert_eq!((split, t), (spectrum, throughput));
+}
