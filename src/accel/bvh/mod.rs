@@ -11,13 +11,12 @@ mod build;
 mod ray4;
 mod wide;
 
+use super::huge_pages::HugeArray;
 use crate::math::{Aabb, Ray, inverse_direction};
 use build::{Bounds, Item};
 use ray4::{Entry, Ray4};
-use wide::Node;
+use wide::{Node, W as WIDTH};
 
-/// Children per wide node.
-const WIDTH: usize = 4;
 /// Deepest binary level the build may create (leaves are forced below it).
 const MAX_DEPTH: usize = 60;
 /// Traversal stack sizes: a node pushes at most `WIDTH` entries and pops
@@ -31,7 +30,7 @@ const STACK_SIZE: usize = (WIDTH - 1) * MAX_DEPTH + WIDTH;
 /// therefore never reported.
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
-    nodes: Vec<Node<WIDTH>>,
+    nodes: HugeArray<Node>,
     indices: Vec<u32>,
     /// Whether `indices[k] == k` (leaf order): leaf tests then skip the
     /// lookup, one dependent memory access less per leaf.
@@ -60,7 +59,7 @@ impl Bvh {
         }
         let (nodes, depth) = wide::collapse(&built.nodes);
         Bvh {
-            nodes,
+            nodes: HugeArray::from_slice(&nodes),
             indices: built.items.iter().map(|item| item.index).collect(),
             leaf_order: false,
             depth,

@@ -10,7 +10,7 @@
 //! the exit distance by [`SLACK`] of itself. A NaN distance (origin on a
 //! plane of an axis the ray is parallel to) keeps the previous bound.
 
-use super::wide::{Node, round_down, round_up};
+use super::wide::{Node, W, round_down, round_up};
 use crate::math::Ray;
 
 /// Relative growth of exit distances, 16 f32 units of roundoff.
@@ -67,7 +67,7 @@ impl Ray4 {
     /// Entry distances of the `W` children and which of them the ray
     /// enters before `t_max`.
     #[inline(always)]
-    pub fn hit<const W: usize>(&self, node: &Node<W>, t_max: f32) -> ([f32; W], [bool; W]) {
+    pub fn hit(&self, node: &Node, t_max: f32) -> ([f32; W], [bool; W]) {
         let mut near = [self.t_min; W];
         let mut far = [t_max; W];
         for k in 0..3 {
