@@ -14,21 +14,26 @@ use super::huge_pages::HugeArray;
 use crate::geometry::triangle::intersect_edges;
 use crate::math::{Aabb, Point3, Ray};
 
-/// The three vertices of a triangle.
+/// The three vertices of a triangle and its index in the caller's list
+/// (read with the vertices, from the same cache line, when it is hit).
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 #[repr(C)]
 struct Packed {
     vertices: [[f64; 3]; 3],
+    original: u32,
+    /// Explicit padding to 80 bytes (plain data has no hidden bytes).
+    unused: u32,
 }
 
-/// A triangle hit: distance, barycentrics of `p1` and `p2`, and the slot
-/// (leaf-order position) of the triangle.
+/// A triangle hit: distance, barycentrics of `p1` and `p2`, the slot
+/// (leaf-order position) of the triangle and its index in the caller's list.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TriangleHit {
     pub t: f64,
     pub b1: f64,
     pub b2: f64,
     pub slot: u32,
+    pub index: u32,
 }
 
 /// A BVH over triangles and the triangles in its leaf order.
@@ -36,8 +41,6 @@ pub struct TriangleHit {
 pub struct LeafTriangles {
     bvh: Bvh,
     packed: HugeArray<Packed>,
-    /// Index in the caller's list of each slot's triangle.
-    original: Vec<u32>,
 }
 
 impl LeafTriangles {
@@ -57,21 +60,19 @@ impl LeafTriangles {
             vertices: triangle(original[slot] as usize)
                 .unwrap_or_default()
                 .map(|p| [p.x, p.y, p.z]),
+            original: original[slot],
+            unused: 0,
         });
-        LeafTriangles {
-            bvh,
-            packed,
-            original,
-        }
+        LeafTriangles { bvh, packed }
     }
 
     /// Number of triangles in the tree.
     pub fn len(&self) -> usize {
-        self.original.len()
+        self.packed.len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.original.is_empty()
+        self.packed.is_empty()
     }
 
     /// Bounds of the triangles in the tree.
@@ -79,17 +80,11 @@ impl LeafTriangles {
         self.bvh.bounds()
     }
 
-    /// The caller's index of the triangle at `slot`.
-    pub fn original(&self, slot: u32) -> u32 {
-        self.original[slot as usize]
-    }
-
     /// The vertices of the triangle at `slot`, if that is the caller's
     /// triangle `index`.
     pub fn vertices(&self, slot: u32, index: u32) -> Option<[Point3; 3]> {
-        let slot = slot as usize;
-        (self.original.get(slot) == Some(&index))
-            .then(|| self.packed[slot].vertices.map(Point3::from))
+        let packed = self.packed.get(slot as usize)?;
+        (packed.original == index).then(|| packed.vertices.map(Point3::from))
     }
 
     #[inline(always)]
@@ -108,6 +103,7 @@ impl LeafTriangles {
                 b1,
                 b2,
                 slot: slot as u32,
+                index: self.packed[slot].original,
             });
             Some(t)
         });

@@ -84,7 +84,7 @@ impl Mesh {
             t: hit.t,
             u: hit.b1,
             v: hit.b2,
-            index: self.triangles.original(hit.slot),
+            index: hit.index,
             slot: hit.slot,
         })
     }
