@@ -1,8 +1,9 @@
 //! A bounding volume hierarchy over boxes: a parallel binned-SAH build of a
 //! binary tree (`build`), collapsed into 4-wide nodes with f32 boxes rounded
 //! outward (`wide`), and allocation-free traversal that tests four child
-//! boxes at once (nearest hit: nearest child first with a shrinking `t_max`;
-//! any hit: stops at the first).
+//! boxes at once, nearest child first (nearest hit: with a shrinking
+//! `t_max`; any hit: stops at the first). Nodes live in huge pages when the
+//! tree is large (`accel::huge_pages`).
 //!
 //! The BVH knows only boxes and their indices; callers keep the primitives and
 //! answer the leaf tests through a closure.
@@ -232,22 +233,37 @@ impl Bvh {
         }
         let r = Ray4::new(ray, t_min);
         let limit = wide::round_up(t_max);
-        let mut stack = [0u32; N];
+        let mut stack = [Entry::default(); N];
         let mut top = 1usize;
         while top > 0 {
             top -= 1;
-            let node = &self.nodes[stack[top] as usize];
-            let (_, hit) = r.hit(node, limit);
-            for (i, _) in hit.iter().enumerate().filter(|(_, hit)| **hit) {
-                if node.count[i] > 0 {
-                    let start = node.child[i] as usize;
-                    for k in start..start + node.count[i] as usize {
-                        if leaf(self.entry(k)) {
-                            return true;
-                        }
+            let entry = stack[top];
+            if entry.count > 0 {
+                let start = entry.target as usize;
+                for k in start..start + entry.count as usize {
+                    if leaf(self.entry(k)) {
+                        return true;
                     }
-                } else {
-                    stack[top] = node.child[i];
+                }
+                continue;
+            }
+            let node = &self.nodes[entry.target as usize];
+            let (near, hit) = r.hit(node, limit);
+            // Nearest child first, as for the nearest hit: the first
+            // surface along the ray is met soonest.
+            let first = top;
+            for i in 0..WIDTH {
+                if hit[i] {
+                    let mut k = top;
+                    while k > first && stack[k - 1].t < near[i] {
+                        stack[k] = stack[k - 1];
+                        k -= 1;
+                    }
+                    stack[k] = Entry {
+                        target: node.child[i],
+                        count: node.count[i],
+                        t: near[i],
+                    };
                     top += 1;
                 }
             }
