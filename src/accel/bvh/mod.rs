@@ -23,8 +23,8 @@ const MAX_DEPTH: usize = 60;
 /// Traversal stack sizes: a node pushes at most `WIDTH` entries and pops
 /// one, so a tree of wide depth `d` needs at most `(WIDTH - 1) d + WIDTH`.
 /// A traversal zeroes its whole stack, so shallow trees use a short one.
-const SMALL_STACK: usize = 32;
-const MEDIUM_STACK: usize = 128;
+const SMALL_STACK: usize = 16;
+const MEDIUM_STACK: usize = 64;
 const STACK_SIZE: usize = (WIDTH - 1) * MAX_DEPTH + WIDTH;
 
 /// A flattened BVH. Primitives with invalid boxes (empty, NaN) are left out and
