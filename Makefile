@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench converge lookalike crosscheck crosscheck-glossy crosscheck-media mitsuba-converge gallery fuzz fuzz-seeds farm-test clean
+.PHONY: build render test lint bench bench-peers converge lookalike crosscheck crosscheck-glossy crosscheck-media mitsuba-converge gallery fuzz fuzz-seeds farm-test clean
 
 build:
 	$(CARGO) build --release
@@ -23,6 +23,18 @@ lint:
 
 bench:
 	$(CARGO) bench --bench throughput
+
+# Our BVH against obvhs and Embree 3 on the same incoherent rays through the
+# 871k-triangle dragon, one thread (examples/bench_peers.rs; not part of
+# `make test`). Installs Debian's libembree-dev when libembree3 is missing.
+# make bench-peers [PEER_RAYS=300000] [PEER_ROUNDS=3]
+PEER_RAYS ?= 300000
+PEER_ROUNDS ?= 3
+bench-peers:
+	@ldconfig -p | grep -q libembree3 || \
+		(apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq libembree-dev)
+	$(CARGO) run --release --features peers --example bench_peers -- \
+		../shared/reference/meshes/dragon_vrip.obj $(PEER_RAYS) $(PEER_ROUNDS)
 
 # Error against time for one scene: make converge SCENE=... [SPP=256]
 converge: build

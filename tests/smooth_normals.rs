@@ -161,6 +161,8 @@ fn smooth_sphere_mesh_without_vn_gets_close_unit_continuous_normals() {
                     u: weights[1],
                     v: weights[2],
                     index: face as u32,
+                    // Not where the mesh keeps it: surface looks it up.
+                    slot: 0,
                 };
                 mesh.surface(&ray, &hit, true).shading_normal
             };

@@ -54,3 +54,14 @@ pub fn incoherent_rays(world: &World, count: usize) -> Vec<Ray> {
         })
         .collect()
 }
+
+/// CPU time of the calling thread in seconds (Linux's
+/// `/proc/thread-self/schedstat`), `None` where it cannot be read: unlike
+/// wall time it leaves out the time other processes of a busy machine
+/// hold the core.
+#[allow(dead_code)] // used by the examples, not by the criterion benches
+pub fn thread_cpu_seconds() -> Option<f64> {
+    let text = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
+    let nanoseconds: f64 = text.split_whitespace().next()?.parse().ok()?;
+    Some(nanoseconds * 1e-9)
+}

@@ -1,4 +1,5 @@
-//! Triangle meshes with their own BVH; uvs when the file has them.
+//! Triangle meshes with their own BVH (`accel::LeafTriangles`); uvs when the
+//! file has them.
 //! One `Mesh` is built per distinct `MeshData` and shared by all its instances.
 //!
 //! Shading normals: the file's vertex normals (`vn`) are always interpolated
@@ -9,70 +10,34 @@
 
 use std::sync::Arc;
 
-use super::triangle::{intersect_edges, surface_vertices};
+use super::triangle::surface_vertices;
 use super::{Intersection, SurfaceHit, normalize_or};
-use crate::accel::Bvh;
+use crate::accel::LeafTriangles;
 use crate::math::{Aabb, Point3, Ray, Vec3};
 use crate::scene::model::MeshData;
 
 #[derive(Debug)]
 pub struct Mesh {
     pub data: Arc<MeshData>,
-    /// Over `packed`, in its (leaf) order.
-    bvh: Bvh,
-    /// The valid triangles in BVH leaf order, ready for the intersection
-    /// test: a leaf's triangles are adjacent in memory, with no index to
-    /// follow to their vertices.
-    packed: Vec<PackedTriangle>,
-    /// Index in `data.triangles` of each packed triangle.
-    original: Vec<u32>,
+    /// The valid triangles and their BVH, in its leaf order.
+    triangles: LeafTriangles,
     /// Area-weighted vertex normals, for `smooth` instances of a file
     /// without `vn` (see the module docs).
     computed_normals: Option<Vec<Vec3>>,
-}
-
-/// A triangle as its intersection test reads it.
-#[derive(Clone, Copy, Debug)]
-struct PackedTriangle {
-    p0: Point3,
-    /// `p1 - p0` and `p2 - p0`.
-    edge1: Vec3,
-    edge2: Vec3,
 }
 
 impl Mesh {
     /// Builds the triangle BVH. Triangles with out-of-range indices are left out.
     pub fn new(data: Arc<MeshData>) -> Mesh {
         let count = data.positions.len();
-        let boxes: Vec<Aabb> = data
-            .triangles
-            .iter()
-            .map(|triangle| {
-                if triangle.iter().any(|&i| i as usize >= count) {
-                    return Aabb::empty();
-                }
-                triangle.iter().fold(Aabb::empty(), |b, &i| {
-                    b.include_point(data.positions[i as usize])
-                })
-            })
-            .collect();
-        let (bvh, original) = Bvh::build(&boxes).into_leaf_order();
-        let packed = original
-            .iter()
-            .map(|&index| {
-                let [a, b, c] = data.triangles[index as usize].map(|i| data.positions[i as usize]);
-                PackedTriangle {
-                    p0: a,
-                    edge1: b - a,
-                    edge2: c - a,
-                }
-            })
-            .collect();
+        let triangles = LeafTriangles::build(data.triangles.len(), |i| {
+            let triangle = data.triangles[i];
+            (!triangle.iter().any(|&i| i as usize >= count))
+                .then(|| triangle.map(|i| data.positions[i as usize]))
+        });
         Mesh {
             data,
-            bvh,
-            packed,
-            original,
+            triangles,
             computed_normals: None,
         }
     }
@@ -109,58 +74,57 @@ impl Mesh {
 
     /// Bounds of the (valid) triangles, `None` for an empty mesh.
     pub fn bounds(&self) -> Option<Aabb> {
-        (!self.bvh.is_empty()).then(|| self.bvh.bounds())
+        (!self.triangles.is_empty()).then(|| self.triangles.bounds())
     }
 
     /// Nearest triangle hit: `u, v` are barycentrics, `index` the triangle.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
-        let mut best = None;
-        self.bvh.traverse(ray, t_min, t_max, |slot, t_max| {
-            let triangle = &self.packed[slot];
-            let (t, b1, b2) = intersect_edges(
-                &triangle.p0,
-                &triangle.edge1,
-                &triangle.edge2,
-                ray,
-                t_min,
-                t_max,
-            )?;
-            best = Some(Intersection {
-                t,
-                u: b1,
-                v: b2,
-                index: self.original[slot],
-            });
-            Some(t)
-        });
-        best
+        let hit = self.triangles.intersect(ray, t_min, t_max)?;
+        Some(Intersection {
+            t: hit.t,
+            u: hit.b1,
+            v: hit.b2,
+            index: hit.index,
+            slot: hit.slot,
+        })
     }
 
     /// Whether any triangle lies on the ray within `(t_min, t_max)`.
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        self.bvh.any(ray, t_min, t_max, |slot| {
-            let triangle = &self.packed[slot];
-            intersect_edges(
-                &triangle.p0,
-                &triangle.edge1,
-                &triangle.edge2,
-                ray,
-                t_min,
-                t_max,
-            )
-            .is_some()
-        })
+        self.triangles.occluded(ray, t_min, t_max)
     }
 
     /// The surface at a hit: the file's vertex normals are interpolated when it
     /// has them, else the computed ones when `smooth` (see the module docs).
     pub fn surface(&self, _ray: &Ray, hit: &Intersection, smooth: bool) -> SurfaceHit {
-        let [a, b, c] = self.data.triangles[hit.index as usize].map(|i| i as usize);
-        let p = &self.data.positions;
+        // The vertices from the triangle just tested (cached; a hit made
+        // elsewhere looks them up), the file's indices only for its uvs and
+        // normals.
+        let [pa, pb, pc] = self
+            .triangles
+            .vertices(hit.slot, hit.index)
+            .unwrap_or_else(|| {
+                self.data.triangles[hit.index as usize].map(|i| self.data.positions[i as usize])
+            });
         let (b1, b2) = (hit.u, hit.v);
         let b0 = 1.0 - b1 - b2;
-        let mut surface = surface_vertices(&p[a], &p[b], &p[c], b1, b2);
-        if let Some(uvs) = self.data.uvs.as_ref().filter(|uvs| uvs.len() == p.len()) {
+        let mut surface = surface_vertices(&pa, &pb, &pc, b1, b2);
+        let vertex_count = self.data.positions.len();
+        let uvs = self
+            .data
+            .uvs
+            .as_ref()
+            .filter(|uvs| uvs.len() == vertex_count);
+        let normals = match self.file_normals() {
+            Some(normals) => Some(normals),
+            None if smooth => self.computed_normals(),
+            None => None,
+        };
+        if uvs.is_none() && normals.is_none() {
+            return surface;
+        }
+        let [a, b, c] = self.data.triangles[hit.index as usize].map(|i| i as usize);
+        if let Some(uvs) = uvs {
             let (t0, t1, t2) = (uvs[a], uvs[b], uvs[c]);
             surface.uv = [
                 b0 * t0[0] + b1 * t1[0] + b2 * t2[0],
@@ -172,7 +136,7 @@ impl Mesh {
             let (du1, dv1) = (t1[0] - t0[0], t1[1] - t0[1]);
             let (du2, dv2) = (t2[0] - t0[0], t2[1] - t0[1]);
             let determinant = du1 * dv2 - dv1 * du2;
-            let (edge1, edge2) = (p[b] - p[a], p[c] - p[a]);
+            let (edge1, edge2) = (pb - pa, pc - pa);
             let dpdu = (edge1 * dv2 - edge2 * dv1) / determinant;
             let dpdv = (edge2 * du1 - edge1 * du2) / determinant;
             let finite = |v: &Vec3| v.iter().all(|c| c.is_finite());
@@ -181,11 +145,6 @@ impl Mesh {
                 surface.dpdv = dpdv;
             }
         }
-        let normals = match self.file_normals() {
-            Some(normals) => Some(normals),
-            None if smooth => self.computed_normals(),
-            None => None,
-        };
         if let Some(normals) = normals {
             let n = normals[a] * b0 + normals[b] * b1 + normals[c] * b2;
             surface.shading_normal = normalize_or(n, surface.geometric_normal);

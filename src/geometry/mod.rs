@@ -38,11 +38,20 @@ pub struct Intersection {
     pub u: f64,
     pub v: f64,
     pub index: u32,
+    /// Where the shape keeps that element, when it differs from `index`
+    /// (a mesh's triangle in BVH leaf order); 0 otherwise.
+    pub slot: u32,
 }
 
 impl Intersection {
     pub fn new(t: f64, u: f64, v: f64) -> Self {
-        Intersection { t, u, v, index: 0 }
+        Intersection {
+            t,
+            u,
+            v,
+            index: 0,
+            slot: 0,
+        }
     }
 }
 

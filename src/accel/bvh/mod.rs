@@ -1,8 +1,9 @@
 //! A bounding volume hierarchy over boxes: a parallel binned-SAH build of a
 //! binary tree (`build`), collapsed into 4-wide nodes with f32 boxes rounded
 //! outward (`wide`), and allocation-free traversal that tests four child
-//! boxes at once (nearest hit: nearest child first with a shrinking `t_max`;
-//! any hit: stops at the first).
+//! boxes at once, nearest child first (nearest hit: with a shrinking
+//! `t_max`; any hit: stops at the first). Nodes live in huge pages when the
+//! tree is large (`accel::huge_pages`).
 //!
 //! The BVH knows only boxes and their indices; callers keep the primitives and
 //! answer the leaf tests through a closure.
@@ -11,26 +12,30 @@ mod build;
 mod ray4;
 mod wide;
 
+use super::huge_pages::HugeArray;
 use crate::math::{Aabb, Ray, inverse_direction};
 use build::{Bounds, Item};
 use ray4::{Entry, Ray4};
-use wide::Node4;
+use wide::{Node, W as WIDTH};
 
 /// Deepest binary level the build may create (leaves are forced below it).
 const MAX_DEPTH: usize = 60;
-/// Traversal stack sizes: a node pushes at most 4 entries and pops one, so a
-/// tree of wide depth `d` needs at most `3 d + 4`. A traversal zeroes its
-/// whole stack, so shallow trees use a short one.
+/// Traversal stack sizes: a node pushes at most `WIDTH` entries and pops
+/// one, so a tree of wide depth `d` needs at most `(WIDTH - 1) d + WIDTH`.
+/// A traversal zeroes its whole stack, so shallow trees use a short one.
 const SMALL_STACK: usize = 16;
 const MEDIUM_STACK: usize = 64;
-const STACK_SIZE: usize = 3 * MAX_DEPTH + 4;
+const STACK_SIZE: usize = (WIDTH - 1) * MAX_DEPTH + WIDTH;
 
 /// A flattened BVH. Primitives with invalid boxes (empty, NaN) are left out and
 /// therefore never reported.
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
-    nodes: Vec<Node4>,
+    nodes: HugeArray<Node>,
     indices: Vec<u32>,
+    /// Whether `indices[k] == k` (leaf order): leaf tests then skip the
+    /// lookup, one dependent memory access less per leaf.
+    leaf_order: bool,
     /// Levels of wide nodes below the root.
     depth: usize,
     /// Exact bounds of everything in the tree.
@@ -55,8 +60,9 @@ impl Bvh {
         }
         let (nodes, depth) = wide::collapse(&built.nodes);
         Bvh {
-            nodes,
+            nodes: HugeArray::from_slice(&nodes),
             indices: built.items.iter().map(|item| item.index).collect(),
+            leaf_order: false,
             depth,
             bounds: Some(built.nodes[0].bounds.to_aabb()),
         }
@@ -69,7 +75,18 @@ impl Bvh {
     pub fn into_leaf_order(mut self) -> (Bvh, Vec<u32>) {
         let order = std::mem::take(&mut self.indices);
         self.indices = (0..order.len() as u32).collect();
+        self.leaf_order = true;
         (self, order)
+    }
+
+    /// The primitive of leaf entry `k`.
+    #[inline(always)]
+    fn entry(&self, k: usize) -> usize {
+        if self.leaf_order {
+            k
+        } else {
+            self.indices[k] as usize
+        }
     }
 
     /// Number of primitives in the tree.
@@ -113,16 +130,21 @@ impl Bvh {
     where
         F: FnMut(usize, f64) -> Option<f64>,
     {
-        if self.depth * 3 + 4 <= SMALL_STACK {
+        if Self::stack_needed(self.depth) <= SMALL_STACK {
             self.traverse_with::<SMALL_STACK, F>(ray, t_min, t_max, leaf)
-        } else if self.depth * 3 + 4 <= MEDIUM_STACK {
+        } else if Self::stack_needed(self.depth) <= MEDIUM_STACK {
             self.traverse_with::<MEDIUM_STACK, F>(ray, t_min, t_max, leaf)
         } else {
             self.traverse_with::<STACK_SIZE, F>(ray, t_min, t_max, leaf)
         }
     }
 
-    /// [`Bvh::traverse`] with a stack of `N >= 3 depth + 4` entries.
+    /// Stack entries a traversal of a tree of wide depth `depth` may need.
+    fn stack_needed(depth: usize) -> usize {
+        (WIDTH - 1) * depth + WIDTH
+    }
+
+    /// [`Bvh::traverse`] with a stack of [`Bvh::stack_needed`] entries.
     #[inline]
     fn traverse_with<const N: usize, F>(
         &self,
@@ -154,8 +176,8 @@ impl Bvh {
             }
             if entry.count > 0 {
                 let start = entry.target as usize;
-                for &index in &self.indices[start..start + entry.count as usize] {
-                    if let Some(t) = leaf(index as usize, t_max) {
+                for k in start..start + entry.count as usize {
+                    if let Some(t) = leaf(self.entry(k), t_max) {
                         t_max = t_max.min(t);
                         limit = wide::round_up(t_max);
                     }
@@ -163,10 +185,10 @@ impl Bvh {
                 continue;
             }
             let node = &self.nodes[entry.target as usize];
-            let (near, hit) = r.hit4(node, limit);
+            let (near, hit) = r.hit(node, limit);
             // Push the hit children farthest first, so the nearest is next.
             let first = top;
-            for i in 0..4 {
+            for i in 0..WIDTH {
                 if hit[i] {
                     let mut k = top;
                     while k > first && stack[k - 1].t < near[i] {
@@ -191,16 +213,16 @@ impl Bvh {
     where
         F: FnMut(usize) -> bool,
     {
-        if self.depth * 3 + 4 <= SMALL_STACK {
+        if Self::stack_needed(self.depth) <= SMALL_STACK {
             self.any_with::<SMALL_STACK, F>(ray, t_min, t_max, leaf)
-        } else if self.depth * 3 + 4 <= MEDIUM_STACK {
+        } else if Self::stack_needed(self.depth) <= MEDIUM_STACK {
             self.any_with::<MEDIUM_STACK, F>(ray, t_min, t_max, leaf)
         } else {
             self.any_with::<STACK_SIZE, F>(ray, t_min, t_max, leaf)
         }
     }
 
-    /// [`Bvh::any`] with a stack of `N >= 3 depth + 4` entries.
+    /// [`Bvh::any`] with a stack of [`Bvh::stack_needed`] entries.
     #[inline]
     fn any_with<const N: usize, F>(&self, ray: &Ray, t_min: f64, t_max: f64, mut leaf: F) -> bool
     where
@@ -211,22 +233,37 @@ impl Bvh {
         }
         let r = Ray4::new(ray, t_min);
         let limit = wide::round_up(t_max);
-        let mut stack = [0u32; N];
+        let mut stack = [Entry::default(); N];
         let mut top = 1usize;
         while top > 0 {
             top -= 1;
-            let node = &self.nodes[stack[top] as usize];
-            let (_, hit) = r.hit4(node, limit);
-            for (i, _) in hit.iter().enumerate().filter(|(_, hit)| **hit) {
-                if node.count[i] > 0 {
-                    let start = node.child[i] as usize;
-                    for &index in &self.indices[start..start + node.count[i] as usize] {
-                        if leaf(index as usize) {
-                            return true;
-                        }
+            let entry = stack[top];
+            if entry.count > 0 {
+                let start = entry.target as usize;
+                for k in start..start + entry.count as usize {
+                    if leaf(self.entry(k)) {
+                        return true;
                     }
-                } else {
-                    stack[top] = node.child[i];
+                }
+                continue;
+            }
+            let node = &self.nodes[entry.target as usize];
+            let (near, hit) = r.hit(node, limit);
+            // Nearest child first, as for the nearest hit: the first
+            // surface along the ray is met soonest.
+            let first = top;
+            for i in 0..WIDTH {
+                if hit[i] {
+                    let mut k = top;
+                    while k > first && stack[k - 1].t < near[i] {
+                        stack[k] = stack[k - 1];
+                        k -= 1;
+                    }
+                    stack[k] = Entry {
+                        target: node.child[i],
+                        count: node.count[i],
+                        t: near[i],
+                    };
                     top += 1;
                 }
             }

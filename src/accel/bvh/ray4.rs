@@ -1,4 +1,4 @@
-//! A ray prepared for the four slab tests of a wide node in f32, made
+//! A ray prepared for the `W` slab tests of a wide node in f32, made
 //! conservative: every box the f64 ray enters within `(t_min, t_max)` is
 //! reported as hit.
 //!
@@ -10,7 +10,7 @@
 //! the exit distance by [`SLACK`] of itself. A NaN distance (origin on a
 //! plane of an axis the ray is parallel to) keeps the previous bound.
 
-use super::wide::{Node4, round_down, round_up};
+use super::wide::{Node, W, round_down, round_up};
 use crate::math::Ray;
 
 /// Relative growth of exit distances, 16 f32 units of roundoff.
@@ -26,7 +26,7 @@ pub(super) struct Entry {
 }
 
 pub(super) struct Ray4 {
-    /// Plane row in [`Node4::planes`] of the near and far plane of each axis.
+    /// Plane row in [`Node::planes`] of the near and far plane of each axis.
     near: [usize; 3],
     far: [usize; 3],
     /// The origin as the near and far planes see it.
@@ -64,22 +64,22 @@ impl Ray4 {
         r
     }
 
-    /// Entry distances of the four children and which of them the ray
+    /// Entry distances of the `W` children and which of them the ray
     /// enters before `t_max`.
     #[inline(always)]
-    pub fn hit4(&self, node: &Node4, t_max: f32) -> ([f32; 4], [bool; 4]) {
-        let mut near = [self.t_min; 4];
-        let mut far = [t_max; 4];
+    pub fn hit(&self, node: &Node, t_max: f32) -> ([f32; W], [bool; W]) {
+        let mut near = [self.t_min; W];
+        let mut far = [t_max; W];
         for k in 0..3 {
             let (n, f) = (&node.planes[self.near[k]], &node.planes[self.far[k]]);
-            for i in 0..4 {
+            for i in 0..W {
                 let a = (n[i] - self.origin_near[k]) * self.inverse[k];
                 let b = (f[i] - self.origin_far[k]) * self.inverse[k];
                 near[i] = if a > near[i] { a } else { near[i] };
                 far[i] = if b < far[i] { b } else { far[i] };
             }
         }
-        let hit = [0, 1, 2, 3].map(|i| near[i] <= far[i] + far[i].abs() * SLACK);
+        let hit = std::array::from_fn(|i| near[i] <= far[i] + far[i].abs() * SLACK);
         (near, hit)
     }
 }

@@ -203,7 +203,7 @@ fn the_tree_is_the_same_for_any_thread_count() {
     let (one, three) = (build(1), build(3));
     assert_eq!(one.indices, three.indices);
     assert_eq!(one.nodes.len(), three.nodes.len());
-    for (a, b) in one.nodes.iter().zip(&three.nodes) {
+    for (a, b) in one.nodes.iter().zip(three.nodes.iter()) {
         assert_eq!((a.planes, a.child, a.count), (b.planes, b.child, b.count));
     }
 }
