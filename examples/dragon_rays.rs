@@ -2,9 +2,10 @@
 //! builds the world of one OBJ mesh, then traces the incoherent rays of
 //! `benches/throughput.rs` through it, closest and any hit, and prints the
 //! build time and M rays/s of each, by wall time and by this thread's CPU
-//! time (which a busy machine disturbs less).
+//! time (which a busy machine disturbs less); with several rounds, each
+//! round's figures and then the median and the range of the CPU-time ones.
 //!
-//! `cargo run --release --example dragon_rays -- [mesh.obj] [rays] [closest|any|both|build]`
+//! `cargo run --release --example dragon_rays -- [mesh.obj] [rays] [closest|any|both|build] [rounds]`
 
 #[path = "../benches/common/mod.rs"]
 mod common;
@@ -26,6 +27,7 @@ fn main() {
         .get(2)
         .map_or(300_000, |s| s.parse().expect("ray count"));
     let mode = args.get(3).map_or("both", |s| s.as_str());
+    let rounds: usize = args.get(4).map_or(1, |s| s.parse().expect("rounds"));
     let scene = Scene::new(
         vec![Material::default()],
         Object::Mesh {
@@ -42,30 +44,53 @@ fn main() {
         return;
     }
     let rays = incoherent_rays(&world, count);
-    if mode != "any" {
-        let (start, cpu) = (Instant::now(), thread_cpu_seconds());
-        let hits = rays
-            .iter()
-            .filter(|r| world.intersect(r, 0.0, f64::INFINITY).is_some())
-            .count();
-        report("closest", count, hits, start, cpu);
+    let (mut closest, mut any) = (Vec::new(), Vec::new());
+    for _ in 0..rounds {
+        if mode != "any" {
+            let (start, cpu) = (Instant::now(), thread_cpu_seconds());
+            let hits = rays
+                .iter()
+                .filter(|r| world.intersect(r, 0.0, f64::INFINITY).is_some())
+                .count();
+            closest.extend(report("closest", count, hits, start, cpu));
+        }
+        if mode != "closest" {
+            let (start, cpu) = (Instant::now(), thread_cpu_seconds());
+            let hits = rays
+                .iter()
+                .filter(|r| world.occluded(r, 0.0, f64::INFINITY))
+                .count();
+            any.extend(report("any", count, hits, start, cpu));
+        }
     }
-    if mode != "closest" {
-        let (start, cpu) = (Instant::now(), thread_cpu_seconds());
-        let hits = rays
-            .iter()
-            .filter(|r| world.occluded(r, 0.0, f64::INFINITY))
-            .count();
-        report("any", count, hits, start, cpu);
+    if rounds > 1 {
+        for (query, rates) in [("closest", closest), ("any", any)] {
+            if let Some(summary) = summary(rates) {
+                println!("{query}: {summary} M rays/s by CPU time, median (range) of {rounds}");
+            }
+        }
     }
 }
 
-/// Prints M rays/s by wall time and, where it can be read, by CPU time.
-fn report(query: &str, count: usize, hits: usize, start: Instant, cpu: Option<f64>) {
+/// The median of `rates` and their range.
+fn summary(mut rates: Vec<f64>) -> Option<String> {
+    rates.sort_by(f64::total_cmp);
+    let (low, high) = (rates.first()?, rates.last()?);
+    Some(format!(
+        "{:.3} ({low:.3}-{high:.3})",
+        rates[rates.len() / 2]
+    ))
+}
+
+/// Prints M rays/s by wall time and, where it can be read, by CPU time;
+/// returns the latter.
+fn report(query: &str, count: usize, hits: usize, start: Instant, cpu: Option<f64>) -> Option<f64> {
     let wall = count as f64 / start.elapsed().as_secs_f64() / 1e6;
-    let cpu = match (cpu, thread_cpu_seconds()) {
-        (Some(a), Some(b)) => format!(", {:.3} by CPU time", count as f64 / (b - a) / 1e6),
-        _ => String::new(),
+    let rate = match (cpu, thread_cpu_seconds()) {
+        (Some(a), Some(b)) => Some(count as f64 / (b - a) / 1e6),
+        _ => None,
     };
+    let cpu = rate.map_or(String::new(), |r| format!(", {r:.3} by CPU time"));
     println!("{query}: {wall:.3} M rays/s{cpu} ({hits} hits)");
+    rate
 }
