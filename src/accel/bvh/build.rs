@@ -9,18 +9,13 @@
 //! the node, then its first child's range, then its second's), so the tree is
 //! the same for any number of threads. Unused slots stay as gaps.
 
+use super::binning::{BIN_COUNT, Binning, Bins};
 use crate::math::Aabb;
 
-/// Number of SAH bins per axis.
-const BIN_COUNT: usize = 16;
-/// Leaves at most this large are accepted when the SAH says so.
-pub(super) const MAX_LEAF_SIZE: usize = 4;
-/// Cost of visiting an interior node relative to one primitive test.
+/// Cost of visiting an interior node, the unit of [`Leaves::group_cost`].
 const TRAVERSAL_COST: f64 = 1.0;
 /// Subtrees over more items than this build their children in parallel.
 const PARALLEL_ITEMS: usize = 4096;
-/// Nodes over more items than this are binned in parallel chunks of this size.
-const PARALLEL_BINNING: usize = 32 * 1024;
 
 /// A node of the binary tree.
 #[derive(Clone, Copy, Debug)]
@@ -62,7 +57,7 @@ impl Bounds {
     }
 
     #[inline]
-    fn union(&self, other: &Bounds) -> Bounds {
+    pub(super) fn union(&self, other: &Bounds) -> Bounds {
         Bounds {
             min: [0, 1, 2].map(|k| lesser(self.min[k], other.min[k])),
             max: [0, 1, 2].map(|k| greater(self.max[k], other.max[k])),
@@ -96,6 +91,32 @@ fn greater(a: f64, b: f64) -> f64 {
     if a > b { a } else { b }
 }
 
+/// What the SAH knows of leaves: their primitives are tested `width` at a
+/// time (a group), each group costing `group_cost` node visits, and a leaf
+/// holds at most `max_size` of them unless the depth limit forces more.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Leaves {
+    pub width: usize,
+    pub group_cost: f64,
+    pub max_size: usize,
+}
+
+impl Leaves {
+    /// Cost of a leaf of `count` primitives.
+    #[inline]
+    fn cost(&self, count: u32) -> f64 {
+        count.div_ceil(self.width as u32) as f64 * self.group_cost
+    }
+}
+
+/// How a tree is built: its leaves and the binary depth at which leaves
+/// are forced.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Settings {
+    pub leaves: Leaves,
+    pub max_depth: usize,
+}
+
 #[derive(Clone, Copy)]
 pub(super) struct Item {
     pub bounds: Bounds,
@@ -104,7 +125,7 @@ pub(super) struct Item {
 
 impl Item {
     #[inline]
-    fn centroid(&self) -> [f64; 3] {
+    pub(super) fn centroid(&self) -> [f64; 3] {
         [0, 1, 2].map(|k| (self.bounds.min[k] + self.bounds.max[k]) * 0.5)
     }
 }
@@ -127,8 +148,8 @@ struct Range {
     first: u32,
 }
 
-/// Builds the tree over `items` (all with valid boxes); `max_depth` forces leaves.
-pub(super) fn build(mut items: Vec<Item>, max_depth: usize) -> Built {
+/// Builds the tree over `items` (all with valid boxes).
+pub(super) fn build(mut items: Vec<Item>, settings: Settings) -> Built {
     if items.is_empty() {
         return Built {
             nodes: Vec::new(),
@@ -143,7 +164,7 @@ pub(super) fn build(mut items: Vec<Item>, max_depth: usize) -> Built {
     };
     let mut nodes = vec![empty; 2 * items.len() - 1];
     let range = bounds_of(&items, 0);
-    let depth = build_node(&mut items, &mut nodes, 0, range, 0, max_depth);
+    let depth = build_node(&mut items, &mut nodes, 0, range, 0, &settings);
     Built {
         nodes,
         items,
@@ -172,13 +193,13 @@ fn build_node(
     slot: u32,
     range: Range,
     depth: usize,
-    max_depth: usize,
+    settings: &Settings,
 ) -> usize {
     nodes[0].bounds = range.bounds;
-    let split = if items.len() <= 1 || depth >= max_depth {
+    let split = if items.len() <= 1 || depth >= settings.max_depth {
         None
     } else {
-        choose_split(items, &range)
+        choose_split(items, &range, &settings.leaves)
     };
     let Some((mid, left, right)) = split else {
         nodes[0].offset = range.first;
@@ -199,17 +220,8 @@ fn build_node(
         ..right
     };
     let parallel = left_items.len() + right_items.len() > PARALLEL_ITEMS;
-    let mut left_job = || build_node(left_items, left_nodes, slot + 1, left, depth + 1, max_depth);
-    let mut right_job = || {
-        build_node(
-            right_items,
-            right_nodes,
-            second,
-            right,
-            depth + 1,
-            max_depth,
-        )
-    };
+    let mut left_job = || build_node(left_items, left_nodes, slot + 1, left, depth + 1, settings);
+    let mut right_job = || build_node(right_items, right_nodes, second, right, depth + 1, settings);
     let (a, b) = if parallel {
         rayon::join(left_job, right_job)
     } else {
@@ -218,96 +230,13 @@ fn build_node(
     a.max(b)
 }
 
-/// Box bounds and count of the items of one bin, per axis.
-#[derive(Clone, Copy)]
-struct Bins {
-    bounds: [[Bounds; BIN_COUNT]; 3],
-    counts: [[u32; BIN_COUNT]; 3],
-}
-
-impl Bins {
-    fn new() -> Bins {
-        Bins {
-            bounds: [[Bounds::EMPTY; BIN_COUNT]; 3],
-            counts: [[0; BIN_COUNT]; 3],
-        }
-    }
-
-    fn merge(mut self, other: Bins) -> Bins {
-        for axis in 0..3 {
-            for b in 0..BIN_COUNT {
-                self.bounds[axis][b] = self.bounds[axis][b].union(&other.bounds[axis][b]);
-                self.counts[axis][b] += other.counts[axis][b];
-            }
-        }
-        self
-    }
-}
-
-/// Maps centroids to bins along each axis (scale 0 for a flat axis, which
-/// puts everything in bin 0). Nodes of few items use as many bins as items.
-struct Binning {
-    min: [f64; 3],
-    scale: [f64; 3],
-    bins: usize,
-}
-
-impl Binning {
-    fn new(centroids: &Bounds, count: usize) -> Binning {
-        let bins = count.clamp(2, BIN_COUNT);
-        let scale = [0, 1, 2].map(|axis| {
-            let extent = centroids.max[axis] - centroids.min[axis];
-            if extent > 0.0 && extent.is_finite() {
-                bins as f64 / extent
-            } else {
-                0.0
-            }
-        });
-        Binning {
-            min: centroids.min,
-            scale,
-            bins,
-        }
-    }
-
-    #[inline]
-    fn bin(&self, axis: usize, c: f64) -> usize {
-        (((c - self.min[axis]) * self.scale[axis]) as usize).min(self.bins - 1)
-    }
-
-    fn fill(&self, items: &[Item], bins: &mut Bins) {
-        for item in items {
-            let c = item.centroid();
-            for (axis, &c) in c.iter().enumerate() {
-                let b = self.bin(axis, c);
-                bins.bounds[axis][b] = bins.bounds[axis][b].union(&item.bounds);
-                bins.counts[axis][b] += 1;
-            }
-        }
-    }
-
-    /// [`Binning::fill`] over chunks in parallel for large nodes; the merge
-    /// is exact, so the bins do not depend on the chunking.
-    fn fill_parallel(&self, items: &[Item], bins: &mut Bins) {
-        use rayon::prelude::*;
-        if items.len() <= PARALLEL_BINNING {
-            self.fill(items, bins);
-            return;
-        }
-        *bins = items
-            .par_chunks(PARALLEL_BINNING)
-            .map(|chunk| {
-                let mut bins = Bins::new();
-                self.fill(chunk, &mut bins);
-                bins
-            })
-            .reduce(Bins::new, Bins::merge);
-    }
-}
-
 /// Chooses a binned-SAH split and partitions `items`; returns the split
 /// position and what both sides know, or `None` when a leaf is cheaper.
-fn choose_split(items: &mut [Item], range: &Range) -> Option<(usize, Range, Range)> {
+fn choose_split(
+    items: &mut [Item],
+    range: &Range,
+    leaves: &Leaves,
+) -> Option<(usize, Range, Range)> {
     let count = items.len();
     let binning = Binning::new(&range.centroids, count);
     let used = binning.bins;
@@ -340,7 +269,8 @@ fn choose_split(items: &mut [Item], range: &Range) -> Option<(usize, Range, Rang
                 continue;
             }
             let cost = TRAVERSAL_COST
-                + (acc.surface_area() * n as f64 + right_area[b] * right_count[b] as f64)
+                + (acc.surface_area() * leaves.cost(n)
+                    + right_area[b] * leaves.cost(right_count[b]))
                     / parent_area;
             if best.is_none_or(|(_, _, c)| cost < c) {
                 best = Some((axis, b, cost));
@@ -349,7 +279,7 @@ fn choose_split(items: &mut [Item], range: &Range) -> Option<(usize, Range, Rang
     }
     let Some((axis, boundary, cost)) = best else {
         // All centroids coincide: split by count so leaves stay small.
-        return (count > MAX_LEAF_SIZE).then(|| {
+        return (count > leaves.max_size).then(|| {
             let mid = count / 2;
             (
                 mid,
@@ -358,7 +288,7 @@ fn choose_split(items: &mut [Item], range: &Range) -> Option<(usize, Range, Rang
             )
         });
     };
-    if count <= MAX_LEAF_SIZE && cost >= count as f64 {
+    if count <= leaves.max_size && cost >= leaves.cost(count as u32) {
         return None;
     }
     let (mid, left_centroids, right_centroids) = partition(items, &binning, axis, boundary);

@@ -1,31 +1,35 @@
 //! A bounding volume hierarchy over boxes: a parallel binned-SAH build of a
-//! binary tree (`build`), collapsed into 4-wide nodes with f32 boxes rounded
-//! outward (`wide`), and allocation-free traversal that tests four child
-//! boxes at once, nearest child first (nearest hit: with a shrinking
-//! `t_max`; any hit: stops at the first). Nodes live in huge pages when the
-//! tree is large (`accel::huge_pages`).
+//! binary tree (`build`), collapsed into 4-wide nodes of one cache line
+//! with child boxes quantised outward to 8 bits (`wide`), and
+//! allocation-free traversal that tests four child boxes at once, nearest
+//! child first (`traverse`; nearest hit: with a shrinking `t_max`; any hit:
+//! stops at the first). Nodes live in huge pages when the tree is large
+//! (`accel::huge_pages`).
 //!
 //! The BVH knows only boxes and their indices; callers keep the primitives and
-//! answer the leaf tests through a closure.
+//! answer the leaf tests through a closure, one primitive at a time or, for
+//! primitives stored in leaf order, one leaf (a run of slots) at a time.
 
+mod binning;
 mod build;
 mod ray4;
+mod traverse;
 mod wide;
 
 use super::huge_pages::HugeArray;
 use crate::math::{Aabb, Ray, inverse_direction};
-use build::{Bounds, Item};
-use ray4::{Entry, Ray4};
-use wide::{Node, W as WIDTH};
+use build::{Bounds, Item, Leaves, Settings};
+use wide::Node;
 
 /// Deepest binary level the build may create (leaves are forced below it).
 const MAX_DEPTH: usize = 60;
-/// Traversal stack sizes: a node pushes at most `WIDTH` entries and pops
-/// one, so a tree of wide depth `d` needs at most `(WIDTH - 1) d + WIDTH`.
-/// A traversal zeroes its whole stack, so shallow trees use a short one.
-const SMALL_STACK: usize = 16;
-const MEDIUM_STACK: usize = 64;
-const STACK_SIZE: usize = (WIDTH - 1) * MAX_DEPTH + WIDTH;
+/// Leaves of a tree over single primitives: at most 4, each test costing
+/// one node visit.
+const SINGLE: Leaves = Leaves {
+    width: 1,
+    group_cost: 1.0,
+    max_size: 4,
+};
 
 /// A flattened BVH. Primitives with invalid boxes (empty, NaN) are left out and
 /// therefore never reported.
@@ -42,41 +46,84 @@ pub struct Bvh {
     bounds: Option<Aabb>,
 }
 
+/// What a build gives before its leaves are numbered.
+struct Collapsed {
+    nodes: Vec<Node>,
+    indices: Vec<u32>,
+    depth: usize,
+    bounds: Option<Aabb>,
+}
+
+fn collapsed(boxes: &[Aabb], leaves: Leaves) -> Collapsed {
+    let items: Vec<Item> = boxes
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| b.is_valid())
+        .map(|(i, b)| Item {
+            bounds: Bounds::from_aabb(b),
+            index: i as u32,
+        })
+        .collect();
+    let settings = Settings {
+        leaves,
+        max_depth: MAX_DEPTH,
+    };
+    let built = build::build(items, settings);
+    if built.nodes.is_empty() {
+        return Collapsed {
+            nodes: Vec::new(),
+            indices: Vec::new(),
+            depth: 0,
+            bounds: None,
+        };
+    }
+    let (nodes, depth) = wide::collapse(&built.nodes);
+    Collapsed {
+        nodes,
+        indices: built.items.iter().map(|item| item.index).collect(),
+        depth,
+        bounds: Some(built.nodes[0].bounds.to_aabb()),
+    }
+}
+
 impl Bvh {
     /// Builds the tree over `boxes`; leaf callbacks receive indices into `boxes`.
     pub fn build(boxes: &[Aabb]) -> Bvh {
-        let items: Vec<Item> = boxes
-            .iter()
-            .enumerate()
-            .filter(|(_, b)| b.is_valid())
-            .map(|(i, b)| Item {
-                bounds: Bounds::from_aabb(b),
-                index: i as u32,
-            })
-            .collect();
-        let built = build::build(items, MAX_DEPTH);
-        if built.nodes.is_empty() {
-            return Bvh::default();
-        }
-        let (nodes, depth) = wide::collapse(&built.nodes);
+        let c = collapsed(boxes, SINGLE);
         Bvh {
-            nodes: HugeArray::from_slice(&nodes),
-            indices: built.items.iter().map(|item| item.index).collect(),
+            nodes: HugeArray::from_slice(&c.nodes),
+            indices: c.indices,
             leaf_order: false,
-            depth,
-            bounds: Some(built.nodes[0].bounds.to_aabb()),
+            depth: c.depth,
+            bounds: c.bounds,
         }
     }
 
-    /// The same tree with leaf entries numbered in leaf order (entry `k` is
-    /// reported as `k`), and the original index of each: a caller that
-    /// stores its primitives in this order reads each leaf's primitives from
-    /// consecutive memory.
-    pub fn into_leaf_order(mut self) -> (Bvh, Vec<u32>) {
-        let order = std::mem::take(&mut self.indices);
-        self.indices = (0..order.len() as u32).collect();
-        self.leaf_order = true;
-        (self, order)
+    /// Builds the tree for a caller that stores its primitives in leaf
+    /// order, in groups of `width` slots that it tests at once (a group
+    /// costing `group_cost` node visits in the SAH). Every leaf starts at a multiple
+    /// of `width` and its slots run on from there (a leaf holds at most
+    /// `width`, or 4 for single slots, unless the depth limit forces
+    /// more); returns the tree and the
+    /// primitive of each slot, `u32::MAX` for the slots that pad a leaf's
+    /// last group. Leaf callbacks receive slots.
+    pub fn build_in_leaf_order(boxes: &[Aabb], width: usize, group_cost: f64) -> (Bvh, Vec<u32>) {
+        let width = width.max(1);
+        let leaves = Leaves {
+            width,
+            group_cost,
+            max_size: width.max(SINGLE.max_size),
+        };
+        let mut c = collapsed(boxes, leaves);
+        let slots = wide::pad_leaves(&mut c.nodes, &c.indices, width);
+        let bvh = Bvh {
+            nodes: HugeArray::from_slice(&c.nodes),
+            indices: (0..c.indices.len() as u32).collect(),
+            leaf_order: true,
+            depth: c.depth,
+            bounds: c.bounds,
+        };
+        (bvh, slots)
     }
 
     /// The primitive of leaf entry `k`.
@@ -126,149 +173,31 @@ impl Bvh {
     /// returns the distance of a hit closer than `t_max`, which then becomes the
     /// new `t_max`. Returns the final `t_max` (unchanged if nothing was hit).
     #[inline]
-    pub fn traverse<F>(&self, ray: &Ray, t_min: f64, t_max: f64, leaf: F) -> f64
+    pub fn traverse<F>(&self, ray: &Ray, t_min: f64, t_max: f64, mut leaf: F) -> f64
     where
         F: FnMut(usize, f64) -> Option<f64>,
     {
-        if Self::stack_needed(self.depth) <= SMALL_STACK {
-            self.traverse_with::<SMALL_STACK, F>(ray, t_min, t_max, leaf)
-        } else if Self::stack_needed(self.depth) <= MEDIUM_STACK {
-            self.traverse_with::<MEDIUM_STACK, F>(ray, t_min, t_max, leaf)
-        } else {
-            self.traverse_with::<STACK_SIZE, F>(ray, t_min, t_max, leaf)
-        }
-    }
-
-    /// Stack entries a traversal of a tree of wide depth `depth` may need.
-    fn stack_needed(depth: usize) -> usize {
-        (WIDTH - 1) * depth + WIDTH
-    }
-
-    /// [`Bvh::traverse`] with a stack of [`Bvh::stack_needed`] entries.
-    #[inline]
-    fn traverse_with<const N: usize, F>(
-        &self,
-        ray: &Ray,
-        t_min: f64,
-        mut t_max: f64,
-        mut leaf: F,
-    ) -> f64
-    where
-        F: FnMut(usize, f64) -> Option<f64>,
-    {
-        if !self.may_hit(ray, t_min, t_max) {
-            return t_max;
-        }
-        let r = Ray4::new(ray, t_min);
-        let mut limit = wide::round_up(t_max);
-        let mut stack = [Entry::default(); N];
-        stack[0] = Entry {
-            target: 0,
-            count: 0,
-            t: f32::NEG_INFINITY,
-        };
-        let mut top = 1usize;
-        while top > 0 {
-            top -= 1;
-            let entry = stack[top];
-            if entry.t > limit {
-                continue;
-            }
-            if entry.count > 0 {
-                let start = entry.target as usize;
-                for k in start..start + entry.count as usize {
-                    if let Some(t) = leaf(self.entry(k), t_max) {
-                        t_max = t_max.min(t);
-                        limit = wide::round_up(t_max);
-                    }
-                }
-                continue;
-            }
-            let node = &self.nodes[entry.target as usize];
-            let (near, hit) = r.hit(node, limit);
-            // Push the hit children farthest first, so the nearest is next.
-            let first = top;
-            for i in 0..WIDTH {
-                if hit[i] {
-                    let mut k = top;
-                    while k > first && stack[k - 1].t < near[i] {
-                        stack[k] = stack[k - 1];
-                        k -= 1;
-                    }
-                    stack[k] = Entry {
-                        target: node.child[i],
-                        count: node.count[i],
-                        t: near[i],
-                    };
-                    top += 1;
+        self.traverse_leaves(ray, t_min, t_max, |first, count, mut t_max| {
+            let mut hit = None;
+            for k in first..first + count {
+                if let Some(t) = leaf(self.entry(k), t_max) {
+                    t_max = t_max.min(t);
+                    hit = Some(t_max);
                 }
             }
-        }
-        t_max
+            hit
+        })
     }
 
     /// Any-hit traversal: true as soon as `leaf(index)` reports a hit.
     #[inline]
-    pub fn any<F>(&self, ray: &Ray, t_min: f64, t_max: f64, leaf: F) -> bool
+    pub fn any<F>(&self, ray: &Ray, t_min: f64, t_max: f64, mut leaf: F) -> bool
     where
         F: FnMut(usize) -> bool,
     {
-        if Self::stack_needed(self.depth) <= SMALL_STACK {
-            self.any_with::<SMALL_STACK, F>(ray, t_min, t_max, leaf)
-        } else if Self::stack_needed(self.depth) <= MEDIUM_STACK {
-            self.any_with::<MEDIUM_STACK, F>(ray, t_min, t_max, leaf)
-        } else {
-            self.any_with::<STACK_SIZE, F>(ray, t_min, t_max, leaf)
-        }
-    }
-
-    /// [`Bvh::any`] with a stack of [`Bvh::stack_needed`] entries.
-    #[inline]
-    fn any_with<const N: usize, F>(&self, ray: &Ray, t_min: f64, t_max: f64, mut leaf: F) -> bool
-    where
-        F: FnMut(usize) -> bool,
-    {
-        if !self.may_hit(ray, t_min, t_max) {
-            return false;
-        }
-        let r = Ray4::new(ray, t_min);
-        let limit = wide::round_up(t_max);
-        let mut stack = [Entry::default(); N];
-        let mut top = 1usize;
-        while top > 0 {
-            top -= 1;
-            let entry = stack[top];
-            if entry.count > 0 {
-                let start = entry.target as usize;
-                for k in start..start + entry.count as usize {
-                    if leaf(self.entry(k)) {
-                        return true;
-                    }
-                }
-                continue;
-            }
-            let node = &self.nodes[entry.target as usize];
-            let (near, hit) = r.hit(node, limit);
-            // Nearest child first, as for the nearest hit: the first
-            // surface along the ray is met soonest.
-            let first = top;
-            for i in 0..WIDTH {
-                if hit[i] {
-                    let mut k = top;
-                    while k > first && stack[k - 1].t < near[i] {
-                        stack[k] = stack[k - 1];
-                        k -= 1;
-                    }
-                    stack[k] = Entry {
-                        target: node.child[i],
-                        count: node.count[i],
-                        t: near[i],
-                    };
-                    top += 1;
-                }
-            }
-        }
-        false
+        self.any_leaves(ray, t_min, t_max, |first, count| {
+            (first..first + count).any(|k| leaf(self.entry(k)))
+        })
     }
 }
 

@@ -25,10 +25,20 @@ pub(super) struct Entry {
     pub t: f32,
 }
 
+impl Entry {
+    /// The root node, entered before anything else.
+    pub const ROOT: Entry = Entry {
+        target: 0,
+        count: 0,
+        t: f32::NEG_INFINITY,
+    };
+}
+
 pub(super) struct Ray4 {
-    /// Plane row in [`Node::planes`] of the near and far plane of each axis.
-    near: [usize; 3],
-    far: [usize; 3],
+    /// Whether the ray runs towards negative values along each axis: its
+    /// near plane is then the box's max (row `3 + k` of [`Node::planes`])
+    /// and its far plane the min (row `k`).
+    negative: [bool; 3],
     /// The origin as the near and far planes see it.
     origin_near: [f32; 3],
     origin_far: [f32; 3],
@@ -40,8 +50,7 @@ impl Ray4 {
     #[inline]
     pub fn new(ray: &Ray, t_min: f64) -> Ray4 {
         let mut r = Ray4 {
-            near: [0, 1, 2],
-            far: [3, 4, 5],
+            negative: [false; 3],
             origin_near: [0.0; 3],
             origin_far: [0.0; 3],
             inverse: [0.0; 3],
@@ -52,8 +61,7 @@ impl Ray4 {
             let (low, high) = (round_down(ray.origin[k]), round_up(ray.origin[k]));
             r.inverse[k] = inverse as f32;
             if inverse < 0.0 {
-                r.near[k] = 3 + k;
-                r.far[k] = k;
+                r.negative[k] = true;
                 r.origin_near[k] = low;
                 r.origin_far[k] = high;
             } else {
@@ -65,21 +73,40 @@ impl Ray4 {
     }
 
     /// Entry distances of the `W` children and which of them the ray
-    /// enters before `t_max`.
+    /// enters before `t_max` (bit `i` for child `i`).
     #[inline(always)]
-    pub fn hit(&self, node: &Node, t_max: f32) -> ([f32; W], [bool; W]) {
+    pub fn hit(&self, node: &Node, t_max: f32) -> ([f32; W], u32) {
         let mut near = [self.t_min; W];
         let mut far = [t_max; W];
         for k in 0..3 {
-            let (n, f) = (&node.planes[self.near[k]], &node.planes[self.far[k]]);
+            let flip = self.negative[k] as usize;
+            let (n, f) = (&node.planes[k + 3 * flip], &node.planes[k + 3 - 3 * flip]);
+            let (step, origin) = (node.step(k), node.origin[k]);
             for i in 0..W {
-                let a = (n[i] - self.origin_near[k]) * self.inverse[k];
-                let b = (f[i] - self.origin_far[k]) * self.inverse[k];
+                // Exact (see `wide::grid`), so the plane is the f32 the
+                // build chose.
+                let (n, f) = (plane(n[i], step, origin), plane(f[i], step, origin));
+                let a = (n - self.origin_near[k]) * self.inverse[k];
+                let b = (f - self.origin_far[k]) * self.inverse[k];
                 near[i] = if a > near[i] { a } else { near[i] };
                 far[i] = if b < far[i] { b } else { far[i] };
             }
         }
-        let hit = std::array::from_fn(|i| near[i] <= far[i] + far[i].abs() * SLACK);
-        (near, hit)
+        let mut mask = 0;
+        for i in 0..W {
+            mask |= ((near[i] <= far[i] + far[i].abs() * SLACK) as u32) << i;
+        }
+        (near, mask & node.valid as u32)
+    }
+}
+
+/// The plane `q` steps above `origin`: exact (see `wide::grid`), so a fused
+/// multiply-add, where the target has one, gives the same f32.
+#[inline(always)]
+fn plane(q: u8, step: f32, origin: f32) -> f32 {
+    if cfg!(target_feature = "fma") {
+        (q as f32).mul_add(step, origin)
+    } else {
+        q as f32 * step + origin
     }
 }

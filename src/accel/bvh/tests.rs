@@ -61,20 +61,40 @@ fn traversal_equals_brute_force_on_random_boxes() {
 }
 
 #[test]
-fn leaf_order_reports_positions_of_the_original_order() {
+fn leaf_order_reports_slots_of_the_original_order_in_groups() {
     let mut rng = Rng::new(8, 9);
     let boxes = random_boxes(&mut rng, 200);
     let bvh = Bvh::build(&boxes);
-    let (ordered, order) = bvh.clone().into_leaf_order();
-    let permuted: Vec<Aabb> = order.iter().map(|&i| boxes[i as usize]).collect();
-    for _ in 0..300 {
-        let origin = Point3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 12.0;
-        let direction =
-            Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) - Vec3::repeat(0.5);
-        let ray = Ray::new(origin, direction, 0.0);
-        assert_eq!(
-            nearest(&bvh, &boxes, &ray),
-            nearest(&ordered, &permuted, &ray)
+    for width in [1, 4] {
+        let (ordered, slots) = Bvh::build_in_leaf_order(&boxes, width, 1.0);
+        assert_eq!(slots.len() % width, 0);
+        let mut seen: Vec<u32> = slots.iter().copied().filter(|&i| i != u32::MAX).collect();
+        seen.sort_unstable();
+        assert_eq!(seen, (0..200).collect::<Vec<u32>>());
+        // Padding slots hold an empty box, which nothing enters.
+        let permuted: Vec<Aabb> = slots
+            .iter()
+            .map(|&i| boxes.get(i as usize).copied().unwrap_or_else(Aabb::empty))
+            .collect();
+        let mut starts = Vec::new();
+        for _ in 0..300 {
+            let origin = Point3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 12.0;
+            let direction =
+                Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) - Vec3::repeat(0.5);
+            let ray = Ray::new(origin, direction, 0.0);
+            assert_eq!(
+                nearest(&bvh, &boxes, &ray),
+                nearest(&ordered, &permuted, &ray)
+            );
+            ordered.traverse_leaves(&ray, 0.0, f64::INFINITY, |first, count, _| {
+                starts.push((first, count));
+                None
+            });
+        }
+        assert!(
+            starts
+                .iter()
+                .all(|&(first, count)| first % width == 0 && (1..=4).contains(&count))
         );
     }
 }
@@ -204,7 +224,7 @@ fn the_tree_is_the_same_for_any_thread_count() {
     assert_eq!(one.indices, three.indices);
     assert_eq!(one.nodes.len(), three.nodes.len());
     for (a, b) in one.nodes.iter().zip(three.nodes.iter()) {
-        assert_eq!((a.planes, a.child, a.count), (b.planes, b.child, b.count));
+        assert_eq!(a, b);
     }
 }
 
@@ -212,5 +232,106 @@ fn the_tree_is_the_same_for_any_thread_count() {
 fn f32_boxes_contain_their_f64_boxes() {
     for v in [0.1, -0.1, 1e-30, 3.0e38, 1.0, -7.3e5, 16_777_217.0] {
         assert!(wide::round_down(v) as f64 <= v && v <= wide::round_up(v) as f64);
+    }
+}
+
+/// Every item's f64 box inside the f32 box of each child slot above it,
+/// from the root down.
+fn assert_contained(bvh: &Bvh, boxes: &[Aabb], node: usize, above: &mut Vec<([f32; 3], [f32; 3])>) {
+    let n = &bvh.nodes[node];
+    for i in 0..wide::W {
+        if n.valid & (1 << i) == 0 {
+            continue;
+        }
+        above.push(n.child_box(i));
+        if n.count[i] > 0 {
+            let first = n.child[i] as usize;
+            for k in first..first + n.count[i] as usize {
+                let b = &boxes[bvh.indices[k] as usize];
+                for (low, high) in above.iter() {
+                    for axis in 0..3 {
+                        assert!(
+                            low[axis] as f64 <= b.min[axis] && b.max[axis] <= high[axis] as f64,
+                            "{b:?} not in {low:?}..{high:?}"
+                        );
+                    }
+                }
+            }
+        } else {
+            assert_contained(bvh, boxes, n.child[i] as usize, above);
+        }
+        above.pop();
+    }
+}
+
+#[test]
+fn quantised_child_boxes_contain_their_items_at_any_scale() {
+    let mut rng = Rng::new(3, 4);
+    for scale in [1.0, 1e-40, 1e-20, 3e4, 1e30, 2e38, 1e300] {
+        for offset in [0.0, 1.0, -7.5e6] {
+            let boxes: Vec<Aabb> = random_boxes(&mut rng, 500)
+                .iter()
+                .map(|b| Aabb {
+                    min: b.min * scale + Vec3::repeat(offset),
+                    max: b.max * scale + Vec3::repeat(offset),
+                })
+                .collect();
+            let bvh = Bvh::build(&boxes);
+            assert_eq!(bvh.len(), 500);
+            assert_contained(&bvh, &boxes, 0, &mut Vec::new());
+        }
+    }
+}
+
+#[test]
+fn grid_planes_are_exact_f32_values_covering_the_range() {
+    let mut rng = Rng::new(10, 11);
+    for _ in 0..2000 {
+        // From subnormal values to 1e36 (nearer the f32 limit, 255 steps
+        // may not fit, and the axis is left unbounded).
+        let magnitude = 10f64.powf(rng.next_f64() * 80.0 - 44.0);
+        let a = wide::round_down((rng.next_f64() - 0.5) * magnitude);
+        let width = magnitude * 10f64.powf(-rng.next_f64() * 9.0) * rng.next_f64();
+        let b = wide::round_up(a as f64 + width);
+        let (exponent, origin) = wide::grid(a, b).expect("finite range");
+        let step = f32::from_bits((exponent as u32) << 23);
+        assert!(origin <= a);
+        for q in 0..=255u8 {
+            let exact = origin as f64 + q as f64 * step as f64;
+            assert_eq!((q as f32 * step + origin) as f64, exact, "{a} {b} {q}");
+            assert_eq!((q as f32).mul_add(step, origin) as f64, exact);
+        }
+        assert!(origin as f64 + 255.0 * step as f64 >= b as f64);
+    }
+    assert_eq!(wide::grid(0.0, f32::INFINITY), None);
+    assert_eq!(wide::grid(-f32::MAX, f32::MAX), None);
+}
+
+#[test]
+fn traversal_equals_brute_force_at_extreme_scales() {
+    let mut rng = Rng::new(12, 13);
+    for scale in [1e-40, 1e36, 1e300] {
+        let boxes: Vec<Aabb> = random_boxes(&mut rng, 300)
+            .iter()
+            .map(|b| Aabb {
+                min: b.min * scale,
+                max: b.max * scale,
+            })
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        for _ in 0..300 {
+            let origin = (Point3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 14.0
+                - Vec3::repeat(2.0))
+                * scale;
+            let direction =
+                Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) - Vec3::repeat(0.5);
+            let ray = Ray::new(origin, direction, 0.0);
+            let inverse = inverse_direction(&direction);
+            let brute = boxes
+                .iter()
+                .filter_map(|b| b.hit_distance(&origin, &inverse, 0.0, f64::INFINITY))
+                .fold(None, |m: Option<f64>, t| Some(m.map_or(t, |m| m.min(t))));
+            assert_eq!(nearest(&bvh, &boxes, &ray), brute, "{scale}");
+        }
     }
 }

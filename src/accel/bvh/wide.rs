@@ -1,6 +1,9 @@
-//! The wide tree: binary nodes collapsed `W` children at a time, child
-//! boxes in f32 rounded outward (a box never shrinks, so no hit is lost),
-//! stored plane by plane so that the `W` slab tests run side by side.
+//! The wide tree: binary nodes collapsed `W` children at a time into
+//! 64-byte nodes (one cache line). Child boxes are quantised to 8 bits per
+//! plane on a grid of the node: per axis an origin and a power-of-two step
+//! chosen so that every plane `origin + q step` (`q` in 0..=255) is an f32
+//! computed exactly; mins are rounded down and maxes up, so a child's grid
+//! box always contains its f64 box and no hit is lost.
 
 use bytemuck::{Pod, Zeroable};
 
@@ -9,32 +12,74 @@ use super::build::{BinaryNode, Bounds};
 /// Children per node: 8 was measured no faster on the 871k dragon.
 pub(super) const W: usize = 4;
 
-/// `W` children: their boxes, and where each leads.
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+/// Largest leaf a node entry holds (`count` is one byte); larger leaves,
+/// which only a build forced at its depth limit makes, become nodes over
+/// parts of them.
+const MAX_COUNT: usize = u8::MAX as usize;
+
+/// Biased f32 exponent of an axis without a finite grid (a child box
+/// reaching beyond the f32 range): its step is `+inf`, every plane is
+/// `0 * inf` (NaN) or `inf`, which the slab test treats as no bound.
+const UNBOUNDED: u8 = u8::MAX;
+
+/// `W` children: their boxes on the node's grid, and where each leads.
+#[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
 #[repr(C, align(64))]
 pub(super) struct Node {
-    /// `min x, min y, min z, max x, max y, max z` of each child. Empty
-    /// slots have `min = +inf`, `max = -inf`, which no ray enters.
-    pub planes: [[f32; W]; 6],
+    /// Lowest grid plane per axis, a multiple of the step.
+    pub origin: [f32; 3],
+    /// Grid step per axis, `2^(exponent - 127)` (the f32 bits of the step
+    /// shifted down by 23).
+    pub exponent: [u8; 3],
+    /// Bit `i`: child `i` exists.
+    pub valid: u8,
+    /// `min x, min y, min z, max x, max y, max z` of each child in grid
+    /// steps from the origin. Empty slots have `min = 255`, `max = 0`.
+    pub planes: [[u8; W]; 6],
     /// Interior child: its node. Leaf: its first entry.
     pub child: [u32; W],
-    /// Leaf: its number of entries; 0 for interior children and empty slots.
-    pub count: [u32; W],
+    /// Leaf: its number of entries (at least 1); 0 for interior children
+    /// and empty slots.
+    pub count: [u8; W],
+    unused: [u8; 4],
 }
 
 impl Node {
     const EMPTY: Node = Node {
+        origin: [0.0; 3],
+        exponent: [127; 3],
+        valid: 0,
         planes: [
-            [f32::INFINITY; W],
-            [f32::INFINITY; W],
-            [f32::INFINITY; W],
-            [f32::NEG_INFINITY; W],
-            [f32::NEG_INFINITY; W],
-            [f32::NEG_INFINITY; W],
+            [u8::MAX; W],
+            [u8::MAX; W],
+            [u8::MAX; W],
+            [0; W],
+            [0; W],
+            [0; W],
         ],
         child: [0; W],
         count: [0; W],
+        unused: [0; 4],
     };
+
+    /// The grid step of `axis`.
+    #[inline(always)]
+    pub fn step(&self, axis: usize) -> f32 {
+        f32::from_bits((self.exponent[axis] as u32) << 23)
+    }
+
+    /// The f32 box of child `i`, planes as the traversal computes them
+    /// (an unbounded axis, whose min planes are NaN, from -inf to inf).
+    #[cfg(test)]
+    pub fn child_box(&self, i: usize) -> ([f32; 3], [f32; 3]) {
+        let plane =
+            |row: usize, k: usize| self.planes[row][i] as f32 * self.step(k) + self.origin[k];
+        let low = [0, 1, 2].map(|k| plane(k, k));
+        (
+            low.map(|p| if p.is_nan() { f32::NEG_INFINITY } else { p }),
+            [0, 1, 2].map(|k| plane(3 + k, k)),
+        )
+    }
 }
 
 /// The largest f32 not above `v`.
@@ -49,30 +94,80 @@ pub(super) fn round_up(v: f64) -> f32 {
     if (f as f64) < v { f.next_up() } else { f }
 }
 
+/// The grid of one axis over `[low, high]` (f32 values, `low <= high`):
+/// the biased exponent of the step and the origin, or `None` when the
+/// range is not finite.
+///
+/// With step `2^e`, the origin `floor(low / 2^e) 2^e` and every plane up
+/// to `origin + 255 2^e` are integers times `2^e` below `2^24 2^e` in
+/// magnitude, so each is an f32 and `q * step + origin` is computed
+/// exactly. The step is the smallest power of two that also makes the 255
+/// steps reach `high`.
+pub(super) fn grid(low: f32, high: f32) -> Option<(u8, f32)> {
+    if !(low.is_finite() && high.is_finite()) {
+        return None;
+    }
+    let (low, high) = (low as f64, high as f64);
+    // Smallest normal step: planes near zero stay exact (subnormal
+    // multiples of 2^-126 are f32 values too).
+    let mut exponent: i32 = -126;
+    let fits = |e: i32| {
+        let step = 2f64.powi(e);
+        let origin = (low / step).floor() * step;
+        let top = origin + 255.0 * step;
+        let limit = (1u64 << 24) as f64 * step;
+        (top >= high && origin.abs() < limit && top.abs() < limit && top <= f32::MAX as f64)
+            .then_some(origin)
+    };
+    // Start near the answer: the step is at least (high - low) / 255 and
+    // at least |value| / 2^24.
+    let span = (high - low) / 255.0;
+    let magnitude = low.abs().max(high.abs()) / (1u64 << 24) as f64;
+    let need = span.max(magnitude);
+    if need > 0.0 {
+        exponent = exponent.max(need.log2().floor() as i32 - 1);
+    }
+    // Up to 2^119, 255 steps stay below the f32 range.
+    while exponent <= 119 {
+        if let Some(origin) = fits(exponent) {
+            return Some(((exponent + 127) as u8, origin as f32));
+        }
+        exponent += 1;
+    }
+    None
+}
+
 /// Collapses the binary tree (root at slot 0, not empty) into `W`-wide
 /// nodes (root at 0); returns them and the depth of the deepest wide node.
 pub(super) fn collapse(binary: &[BinaryNode]) -> (Vec<Node>, usize) {
     let mut nodes = Vec::with_capacity(binary.len() / (W - 1) + 1);
-    let depth = if binary[0].count > 0 {
+    let root = &binary[0];
+    let depth = if root.count > 0 {
         // A single leaf: one node with one child.
-        let mut node = Node::EMPTY;
-        set_child(&mut node, 0, &binary[0], binary[0].offset, binary[0].count);
-        nodes.push(node);
-        0
+        let children = [Child::Leaf {
+            bounds: root.bounds,
+            first: root.offset,
+            count: root.count,
+        }];
+        emit_children(&children, &mut nodes, 0)
     } else {
         emit(binary, 0, &mut nodes, 0)
     };
     (nodes, depth)
 }
 
-fn set_child(node: &mut Node, i: usize, child: &BinaryNode, target: u32, count: u32) {
-    let b: &Bounds = &child.bounds;
-    for k in 0..3 {
-        node.planes[k][i] = round_down(b.min[k]);
-        node.planes[3 + k][i] = round_up(b.max[k]);
-    }
-    node.child[i] = target;
-    node.count[i] = count;
+/// A child slot before it is written: an interior binary node or a run of
+/// leaf entries.
+#[derive(Clone, Copy)]
+enum Child {
+    Interior {
+        slot: usize,
+    },
+    Leaf {
+        bounds: Bounds,
+        first: u32,
+        count: u32,
+    },
 }
 
 fn area(b: &Bounds) -> f64 {
@@ -84,33 +179,180 @@ fn area(b: &Bounds) -> f64 {
 /// interior children; returns the deepest wide level below it.
 fn emit(binary: &[BinaryNode], slot: usize, nodes: &mut Vec<Node>, depth: usize) -> usize {
     // Open the largest interior child until there are `W`.
-    let mut children = arrayvec::ArrayVec::<usize, W>::new();
-    children.push(slot + 1);
-    children.push(binary[slot].offset as usize);
-    while children.len() < W {
-        let largest = children
+    let mut open = arrayvec::ArrayVec::<usize, W>::new();
+    open.push(slot + 1);
+    open.push(binary[slot].offset as usize);
+    while open.len() < W {
+        let largest = open
             .iter()
             .enumerate()
             .filter(|(_, c)| binary[**c].count == 0)
             .max_by(|a, b| area(&binary[*a.1].bounds).total_cmp(&area(&binary[*b.1].bounds)));
-        let Some((i, &open)) = largest else {
+        let Some((i, &slot)) = largest else {
             break;
         };
-        children[i] = open + 1;
-        children.insert(i + 1, binary[open].offset as usize);
+        open[i] = slot + 1;
+        open.insert(i + 1, binary[slot].offset as usize);
     }
+    let children: arrayvec::ArrayVec<Child, W> = open
+        .iter()
+        .map(|&c| {
+            let node = &binary[c];
+            if node.count > 0 {
+                Child::Leaf {
+                    bounds: node.bounds,
+                    first: node.offset,
+                    count: node.count,
+                }
+            } else {
+                Child::Interior { slot: c }
+            }
+        })
+        .collect();
+    let bounds = |child: &Child| match child {
+        Child::Interior { slot } => binary[*slot].bounds,
+        Child::Leaf { bounds, .. } => *bounds,
+    };
     let index = nodes.len();
-    nodes.push(Node::EMPTY);
+    let boxes: arrayvec::ArrayVec<Bounds, W> = children.iter().map(bounds).collect();
+    nodes.push(quantise(&boxes));
     let mut deepest = depth;
-    for (i, &c) in children.iter().enumerate() {
-        let child = &binary[c];
-        if child.count > 0 {
-            set_child(&mut nodes[index], i, child, child.offset, child.count);
-        } else {
-            let target = nodes.len() as u32;
-            deepest = deepest.max(emit(binary, c, nodes, depth + 1));
-            set_child(&mut nodes[index], i, child, target, 0);
+    for (i, child) in children.iter().enumerate() {
+        let target = nodes.len() as u32;
+        match *child {
+            Child::Interior { slot } => {
+                deepest = deepest.max(emit(binary, slot, nodes, depth + 1));
+                set_target(&mut nodes[index], i, target, 0);
+            }
+            Child::Leaf { first, count, .. } if count as usize <= MAX_COUNT => {
+                set_target(&mut nodes[index], i, first, count);
+            }
+            Child::Leaf {
+                bounds,
+                first,
+                count,
+            } => {
+                deepest = deepest.max(emit_leaf(bounds, first, count, nodes, depth + 1));
+                set_target(&mut nodes[index], i, target, 0);
+            }
         }
     }
     deepest
+}
+
+/// Emits a node over the entries `first..first + count` of one leaf too
+/// large for a node entry, in `W` runs (each with the leaf's box).
+fn emit_leaf(bounds: Bounds, first: u32, count: u32, nodes: &mut Vec<Node>, depth: usize) -> usize {
+    let part = count.div_ceil(W as u32);
+    let children: arrayvec::ArrayVec<Child, W> = (0..W as u32)
+        .filter(|i| i * part < count)
+        .map(|i| Child::Leaf {
+            bounds,
+            first: first + i * part,
+            count: part.min(count - i * part),
+        })
+        .collect();
+    emit_children(&children, nodes, depth)
+}
+
+/// Emits a node whose children are all leaves (runs of entries).
+fn emit_children(children: &[Child], nodes: &mut Vec<Node>, depth: usize) -> usize {
+    let boxes: arrayvec::ArrayVec<Bounds, W> = children
+        .iter()
+        .map(|c| match c {
+            Child::Leaf { bounds, .. } => *bounds,
+            Child::Interior { .. } => Bounds::EMPTY,
+        })
+        .collect();
+    let index = nodes.len();
+    nodes.push(quantise(&boxes));
+    let mut deepest = depth;
+    for (i, child) in children.iter().enumerate() {
+        if let Child::Leaf {
+            bounds,
+            first,
+            count,
+        } = *child
+        {
+            if count as usize <= MAX_COUNT {
+                set_target(&mut nodes[index], i, first, count);
+            } else {
+                let target = nodes.len() as u32;
+                deepest = deepest.max(emit_leaf(bounds, first, count, nodes, depth + 1));
+                set_target(&mut nodes[index], i, target, 0);
+            }
+        }
+    }
+    deepest
+}
+
+fn set_target(node: &mut Node, i: usize, target: u32, count: u32) {
+    node.child[i] = target;
+    node.count[i] = count as u8;
+}
+
+/// A node with the given child boxes (at most `W`) on its grid; targets
+/// are set by the caller.
+fn quantise(boxes: &[Bounds]) -> Node {
+    let mut node = Node::EMPTY;
+    let low: [[f32; 3]; W] =
+        std::array::from_fn(|i| boxes.get(i).map_or([0.0; 3], |b| b.min.map(round_down)));
+    let high: [[f32; 3]; W] =
+        std::array::from_fn(|i| boxes.get(i).map_or([0.0; 3], |b| b.max.map(round_up)));
+    for k in 0..3 {
+        let lowest = (0..boxes.len())
+            .map(|i| low[i][k])
+            .fold(f32::INFINITY, f32::min);
+        let highest = (0..boxes.len())
+            .map(|i| high[i][k])
+            .fold(f32::NEG_INFINITY, f32::max);
+        let Some((exponent, origin)) = grid(lowest, highest) else {
+            node.exponent[k] = UNBOUNDED;
+            node.origin[k] = 0.0;
+            for i in 0..boxes.len() {
+                node.planes[k][i] = 0;
+                node.planes[3 + k][i] = u8::MAX;
+            }
+            continue;
+        };
+        node.exponent[k] = exponent;
+        node.origin[k] = origin;
+        let step = node.step(k) as f64;
+        for i in 0..boxes.len() {
+            // Exact: differences of f32 values in f64, divided by a power
+            // of two.
+            let q_low = ((low[i][k] as f64 - origin as f64) / step).floor();
+            let q_high = ((high[i][k] as f64 - origin as f64) / step).ceil();
+            node.planes[k][i] = q_low.clamp(0.0, 255.0) as u8;
+            node.planes[3 + k][i] = q_high.clamp(0.0, 255.0) as u8;
+        }
+    }
+    node.valid = ((1u32 << boxes.len()) - 1) as u8;
+    node
+}
+
+/// Moves every leaf to a slot that is a multiple of `width` (leaves in
+/// leaf order, each on from the previous one's last group) and returns
+/// the item of each slot (`indices` holds them in leaf order), `u32::MAX`
+/// for the slots that pad a leaf's last group.
+pub(super) fn pad_leaves(nodes: &mut [Node], indices: &[u32], width: usize) -> Vec<u32> {
+    // (first entry, node, child) of every leaf, in leaf order.
+    let mut leaves: Vec<(u32, usize, usize)> = Vec::new();
+    for (n, node) in nodes.iter().enumerate() {
+        for i in 0..W {
+            if node.valid & (1 << i) != 0 && node.count[i] > 0 {
+                leaves.push((node.child[i], n, i));
+            }
+        }
+    }
+    leaves.sort_unstable();
+    let mut slots = Vec::with_capacity(indices.len() + indices.len() / 2);
+    for (first, n, i) in leaves {
+        let count = nodes[n].count[i] as usize;
+        nodes[n].child[i] = slots.len() as u32;
+        let first = first as usize;
+        slots.extend_from_slice(&indices[first..first + count]);
+        slots.resize(slots.len().next_multiple_of(width), u32::MAX);
+    }
+    slots
 }
