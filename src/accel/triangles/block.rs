@@ -147,19 +147,21 @@ pub(super) fn test(rows: &[[f64; LANES]; 9], ray: &Ray, t_min: f64, t_max: f64) 
     let q = cross(s, edge1);
     let b2 = lanes(|i| dot(d, q)[i] * inverse[i]);
     let t = lanes(|i| dot(edge2, q)[i] * inverse[i]);
-    // Lane masks (all ones where true) combined with `&`, not `&&`: no
-    // branches, all lanes at once.
-    let all = |c: bool| 0u64.wrapping_sub(c as u64);
-    let hit: [u64; LANES] = std::array::from_fn(|i| {
-        all(determinant[i] != 0.0)
-            & all(determinant[i].abs() < f64::INFINITY)
-            & all(b1[i] >= 0.0)
-            & all(b1[i] <= 1.0)
-            & all(b2[i] >= 0.0)
-            & all(b1[i] + b2[i] <= 1.0)
-            & all(t[i] > t_min)
-            & all(t[i] < t_max)
-    });
-    let mask = (0..LANES).fold(0, |mask, i| mask | ((hit[i] >> 63) as u32) << i);
+    // The tests of `intersect_edges` but two that the others imply (a zero
+    // determinant makes `b1` infinite or NaN; `b2 >= 0` and `b1 + b2 <= 1`
+    // give `b1 <= 1`, rounding being monotonic), each a whole lane array
+    // so that they compile to vector compares, combined without branches.
+    let finite = lanes(|i| determinant[i] * 0.0);
+    let sum = lanes(|i| b1[i] + b2[i]);
+    let tests: [[bool; LANES]; 6] = [
+        std::array::from_fn(|i| finite[i] == 0.0),
+        std::array::from_fn(|i| b1[i] >= 0.0),
+        std::array::from_fn(|i| b2[i] >= 0.0),
+        std::array::from_fn(|i| sum[i] <= 1.0),
+        std::array::from_fn(|i| t[i] > t_min),
+        std::array::from_fn(|i| t[i] < t_max),
+    ];
+    let hit: [bool; LANES] = std::array::from_fn(|i| tests.iter().all(|test| test[i]));
+    let mask = (0..LANES).fold(0, |mask, i| mask | (hit[i] as u32) << i);
     LaneHits { mask, t, b1, b2 }
 }

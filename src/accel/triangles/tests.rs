@@ -100,3 +100,72 @@ fn queries_equal_brute_force(single: bool) {
     }
     assert!(hits > 2000, "{hits} hits");
 }
+
+/// Each lane of a block answers as `intersect_edges` does, bit for bit,
+/// on random, degenerate (zero area, a ray in the plane) and non-finite
+/// triangles and rays.
+#[test]
+fn block_lanes_equal_the_scalar_test_bit_for_bit() {
+    use super::block::{LANES, test};
+    use crate::geometry::triangle::intersect_edges;
+    let mut rng = Rng::new(41, 42);
+    let special = [0.0, -0.0, 1.0, 0.5, f64::INFINITY, f64::NAN, 1e-300, 1e300];
+    let value = |rng: &mut Rng| {
+        if rng.next_f64() < 0.1 {
+            special[(rng.next_f64() * special.len() as f64) as usize]
+        } else {
+            rng.next_f64() * 2.0 - 1.0
+        }
+    };
+    let mut hits = 0;
+    for k in 0..20_000 {
+        let mut rows = [[0.0; LANES]; 9];
+        for row in rows.iter_mut() {
+            for c in row.iter_mut() {
+                *c = value(&mut rng);
+            }
+        }
+        if k % 7 == 0 {
+            // Lane 1 degenerate: its third vertex on its first edge.
+            for axis in 0..3 {
+                rows[6 + axis][1] = (rows[axis][1] + rows[3 + axis][1]) * 0.5;
+            }
+        }
+        let origin = Point3::new(value(&mut rng), value(&mut rng), value(&mut rng) - 2.0);
+        let direction = if k % 11 == 0 {
+            // In the plane z = 0 of lane 2, made flat.
+            rows[2][2] = 0.0;
+            rows[5][2] = 0.0;
+            rows[8][2] = 0.0;
+            Vec3::new(value(&mut rng), value(&mut rng), 0.0)
+        } else {
+            Vec3::new(value(&mut rng), value(&mut rng), 1.0 + rng.next_f64())
+        };
+        let ray = Ray::new(origin, direction, 0.0);
+        let t_max = if k % 3 == 0 { 1.5 } else { f64::INFINITY };
+        let lanes = test(&rows, &ray, 1e-9, t_max);
+        for lane in 0..LANES {
+            let p = |v: usize| {
+                Point3::new(
+                    rows[3 * v][lane],
+                    rows[3 * v + 1][lane],
+                    rows[3 * v + 2][lane],
+                )
+            };
+            let scalar = intersect_edges(&p(0), &(p(1) - p(0)), &(p(2) - p(0)), &ray, 1e-9, t_max);
+            assert_eq!(
+                lanes.mask & (1 << lane) != 0,
+                scalar.is_some(),
+                "{rows:?} {ray:?}"
+            );
+            if let Some((t, b1, b2)) = scalar {
+                hits += 1;
+                assert_eq!(
+                    [t, b1, b2].map(f64::to_bits),
+                    [lanes.t[lane], lanes.b1[lane], lanes.b2[lane]].map(f64::to_bits)
+                );
+            }
+        }
+    }
+    assert!(hits > 1000, "{hits} hits");
+}
