@@ -1,9 +1,9 @@
 //! A bounding volume hierarchy over boxes: a parallel binned-SAH build of a
-//! binary tree (`build`), collapsed into 4-wide nodes of one cache line
+//! binary tree (`build`), collapsed into 8-wide nodes of two cache lines
 //! with child boxes quantised outward to 8 bits (`wide`), and
-//! allocation-free traversal that tests four child boxes at once, nearest
-//! child first (`traverse`; nearest hit: with a shrinking `t_max`; any hit:
-//! stops at the first). Nodes live in huge pages when the tree is large
+//! allocation-free traversal that tests the eight child boxes at once
+//! (`ray8`), nearest child first (`traverse`; nearest hit: with a
+//! shrinking `t_max`; any hit: stops at the first). Nodes live in huge pages when the tree is large
 //! (`accel::huge_pages`).
 //!
 //! The BVH knows only boxes and their indices; callers keep the primitives and
@@ -12,7 +12,7 @@
 
 mod binning;
 mod build;
-mod ray4;
+mod ray8;
 mod traverse;
 mod wide;
 

@@ -5,7 +5,7 @@
 //! one child goes straight on to it, and of several the nearest is kept and
 //! the others pushed farthest first, so that they pop nearest first.
 
-use super::ray4::{Entry, Ray4};
+use super::ray8::{Entry, Ray8};
 use super::wide::{self, Node, W as WIDTH};
 use super::{Bvh, MAX_DEPTH};
 use crate::math::Ray;
@@ -70,7 +70,7 @@ impl Bvh {
     where
         F: FnMut(usize, usize, f64) -> Option<f64>,
     {
-        let r = Ray4::new(ray, t_min);
+        let r = Ray8::new(ray, t_min);
         let nodes: &[Node] = &self.nodes;
         let mut limit = wide::round_up(t_max);
         let mut stack = [Entry::default(); N];
@@ -110,7 +110,7 @@ impl Bvh {
     where
         F: FnMut(usize, usize) -> bool,
     {
-        let r = Ray4::new(ray, t_min);
+        let r = Ray8::new(ray, t_min);
         let nodes: &[Node] = &self.nodes;
         let limit = wide::round_up(t_max);
         let mut stack = [Entry::default(); N];
@@ -169,7 +169,7 @@ fn descend<const N: usize>(
         *top += 1;
         return nearer;
     }
-    // Three or four: insertion into the stack, farthest first.
+    // Three or more: insertion into the stack, farthest first.
     let bottom = *top;
     let mut bits = mask;
     while bits != 0 {

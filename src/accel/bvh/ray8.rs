@@ -1,4 +1,5 @@
-//! A ray prepared for the `W` slab tests of a wide node in f32, made
+//! A ray prepared for the 8 slab tests of a wide node, side by side in f32
+//! (`wide`'s 8-lane vectors: AVX where the target has it), made
 //! conservative: every box the f64 ray enters within `(t_min, t_max)` is
 //! reported as hit.
 //!
@@ -12,6 +13,7 @@
 
 use super::wide::{Node, W, round_down, round_up};
 use crate::math::Ray;
+use wide::{f32x8, i16x8, i32x8, u8x16};
 
 /// Relative growth of exit distances, 16 f32 units of roundoff.
 const SLACK: f32 = 1.0 / (1u32 << 20) as f32;
@@ -34,7 +36,7 @@ impl Entry {
     };
 }
 
-pub(super) struct Ray4 {
+pub(super) struct Ray8 {
     /// Whether the ray runs towards negative values along each axis: its
     /// near plane is then the box's max (row `3 + k` of [`Node::planes`])
     /// and its far plane the min (row `k`).
@@ -46,10 +48,10 @@ pub(super) struct Ray4 {
     t_min: f32,
 }
 
-impl Ray4 {
+impl Ray8 {
     #[inline]
-    pub fn new(ray: &Ray, t_min: f64) -> Ray4 {
-        let mut r = Ray4 {
+    pub fn new(ray: &Ray, t_min: f64) -> Ray8 {
+        let mut r = Ray8 {
             negative: [false; 3],
             origin_near: [0.0; 3],
             origin_far: [0.0; 3],
@@ -76,37 +78,31 @@ impl Ray4 {
     /// enters before `t_max` (bit `i` for child `i`).
     #[inline(always)]
     pub fn hit(&self, node: &Node, t_max: f32) -> ([f32; W], u32) {
-        let mut near = [self.t_min; W];
-        let mut far = [t_max; W];
+        let mut near = f32x8::splat(self.t_min);
+        let mut far = f32x8::splat(t_max);
         for k in 0..3 {
             let flip = self.negative[k] as usize;
             let (n, f) = (&node.planes[k + 3 * flip], &node.planes[k + 3 - 3 * flip]);
-            let (step, origin) = (node.step(k), node.origin[k]);
-            for i in 0..W {
-                // Exact (see `wide::grid`), so the plane is the f32 the
-                // build chose.
-                let (n, f) = (plane(n[i], step, origin), plane(f[i], step, origin));
-                let a = (n - self.origin_near[k]) * self.inverse[k];
-                let b = (f - self.origin_far[k]) * self.inverse[k];
-                near[i] = if a > near[i] { a } else { near[i] };
-                far[i] = if b < far[i] { b } else { far[i] };
-            }
+            let (step, origin) = (f32x8::splat(node.step(k)), f32x8::splat(node.origin[k]));
+            // Exact (see `wide::grid`), so each plane is the f32 the build
+            // chose, fused or not.
+            let n = lanes(n).mul_add(step, origin);
+            let f = lanes(f).mul_add(step, origin);
+            let a = (n - f32x8::splat(self.origin_near[k])) * f32x8::splat(self.inverse[k]);
+            let b = (f - f32x8::splat(self.origin_far[k])) * f32x8::splat(self.inverse[k]);
+            // A NaN distance keeps the bound (the comparison is false).
+            near = a.simd_gt(near).select(a, near);
+            far = b.simd_lt(far).select(b, far);
         }
-        let mut mask = 0;
-        for i in 0..W {
-            mask |= ((near[i] <= far[i] + far[i].abs() * SLACK) as u32) << i;
-        }
-        (near, mask & node.valid as u32)
+        let hit = near.simd_le(far + far.abs() * f32x8::splat(SLACK));
+        (near.to_array(), hit.to_bitmask() & node.valid as u32)
     }
 }
 
-/// The plane `q` steps above `origin`: exact (see `wide::grid`), so a fused
-/// multiply-add, where the target has one, gives the same f32.
+/// Eight grid coordinates as f32 lanes.
 #[inline(always)]
-fn plane(q: u8, step: f32, origin: f32) -> f32 {
-    if cfg!(target_feature = "fma") {
-        (q as f32).mul_add(step, origin)
-    } else {
-        q as f32 * step + origin
-    }
+fn lanes(q: &[u8; W]) -> f32x8 {
+    let mut bytes = [0u8; 16];
+    bytes[..W].copy_from_slice(q);
+    f32x8::from_i32x8(i32x8::from_i16x8(i16x8::from_u8x16_low(u8x16::new(bytes))))
 }
