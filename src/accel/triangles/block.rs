@@ -5,6 +5,7 @@
 use bytemuck::{Pod, Zeroable};
 
 use crate::math::{Point3, Ray};
+use wide::f64x4;
 
 /// Triangles per block, tested side by side.
 pub(super) const LANES: usize = 4;
@@ -92,33 +93,24 @@ pub(super) struct LaneHits {
     pub b2: [f64; LANES],
 }
 
-/// One f64 per lane.
-type Lane = [f64; LANES];
-
-#[inline(always)]
-fn lanes(f: impl FnMut(usize) -> f64) -> Lane {
-    std::array::from_fn(f)
-}
-
-#[inline(always)]
-fn sub(a: Lane, b: Lane) -> Lane {
-    lanes(|i| a[i] - b[i])
-}
+/// One f64 per lane (`wide`'s 4-lane vector: AVX here; each operation
+/// rounds as the scalar one does, and none is fused).
+type Lane = f64x4;
 
 /// nalgebra's cross product, lane by lane.
 #[inline(always)]
 fn cross(a: [Lane; 3], b: [Lane; 3]) -> [Lane; 3] {
     [
-        lanes(|i| a[1][i] * b[2][i] - a[2][i] * b[1][i]),
-        lanes(|i| a[2][i] * b[0][i] - a[0][i] * b[2][i]),
-        lanes(|i| a[0][i] * b[1][i] - a[1][i] * b[0][i]),
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
     ]
 }
 
 /// nalgebra's dot product (`(x + y) + z`), lane by lane.
 #[inline(always)]
 fn dot(a: [Lane; 3], b: [Lane; 3]) -> Lane {
-    lanes(|i| a[0][i] * b[0][i] + a[1][i] * b[1][i] + a[2][i] * b[2][i])
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 /// `geometry::triangle::intersect_edges` on each lane, without its early
@@ -126,42 +118,35 @@ fn dot(a: [Lane; 3], b: [Lane; 3]) -> Lane {
 /// answer is too.
 #[inline(always)]
 pub(super) fn test(rows: &[[f64; LANES]; 9], ray: &Ray, t_min: f64, t_max: f64) -> LaneHits {
-    let o = [ray.origin.x, ray.origin.y, ray.origin.z].map(|c| [c; LANES]);
-    let d = [ray.direction.x, ray.direction.y, ray.direction.z].map(|c| [c; LANES]);
-    let p0 = [rows[0], rows[1], rows[2]];
-    let edge1 = [
-        sub(rows[3], p0[0]),
-        sub(rows[4], p0[1]),
-        sub(rows[5], p0[2]),
-    ];
-    let edge2 = [
-        sub(rows[6], p0[0]),
-        sub(rows[7], p0[1]),
-        sub(rows[8], p0[2]),
-    ];
+    let row = |k: usize| f64x4::new(rows[k]);
+    let o = [ray.origin.x, ray.origin.y, ray.origin.z].map(f64x4::splat);
+    let d = [ray.direction.x, ray.direction.y, ray.direction.z].map(f64x4::splat);
+    let p0 = [row(0), row(1), row(2)];
+    let edge1 = [row(3) - p0[0], row(4) - p0[1], row(5) - p0[2]];
+    let edge2 = [row(6) - p0[0], row(7) - p0[1], row(8) - p0[2]];
     let p = cross(d, edge2);
     let determinant = dot(edge1, p);
-    let inverse = lanes(|i| 1.0 / determinant[i]);
-    let s = [sub(o[0], p0[0]), sub(o[1], p0[1]), sub(o[2], p0[2])];
-    let b1 = lanes(|i| dot(s, p)[i] * inverse[i]);
+    let inverse = f64x4::splat(1.0) / determinant;
+    let s = [o[0] - p0[0], o[1] - p0[1], o[2] - p0[2]];
+    let b1 = dot(s, p) * inverse;
     let q = cross(s, edge1);
-    let b2 = lanes(|i| dot(d, q)[i] * inverse[i]);
-    let t = lanes(|i| dot(edge2, q)[i] * inverse[i]);
+    let b2 = dot(d, q) * inverse;
+    let t = dot(edge2, q) * inverse;
     // The tests of `intersect_edges` but two that the others imply (a zero
     // determinant makes `b1` infinite or NaN; `b2 >= 0` and `b1 + b2 <= 1`
-    // give `b1 <= 1`, rounding being monotonic), each a whole lane array
-    // so that they compile to vector compares, combined without branches.
-    let finite = lanes(|i| determinant[i] * 0.0);
-    let sum = lanes(|i| b1[i] + b2[i]);
-    let tests: [[bool; LANES]; 6] = [
-        std::array::from_fn(|i| finite[i] == 0.0),
-        std::array::from_fn(|i| b1[i] >= 0.0),
-        std::array::from_fn(|i| b2[i] >= 0.0),
-        std::array::from_fn(|i| sum[i] <= 1.0),
-        std::array::from_fn(|i| t[i] > t_min),
-        std::array::from_fn(|i| t[i] < t_max),
-    ];
-    let hit: [bool; LANES] = std::array::from_fn(|i| tests.iter().all(|test| test[i]));
-    let mask = (0..LANES).fold(0, |mask, i| mask | (hit[i] as u32) << i);
-    LaneHits { mask, t, b1, b2 }
+    // give `b1 <= 1`, rounding being monotonic); `d * 0 == 0` is
+    // finiteness.
+    let zero = f64x4::splat(0.0);
+    let hit = (determinant * zero).simd_eq(zero)
+        & b1.simd_ge(zero)
+        & b2.simd_ge(zero)
+        & (b1 + b2).simd_le(f64x4::splat(1.0))
+        & t.simd_gt(f64x4::splat(t_min))
+        & t.simd_lt(f64x4::splat(t_max));
+    LaneHits {
+        mask: hit.to_bitmask(),
+        t: t.to_array(),
+        b1: b1.to_array(),
+        b2: b2.to_array(),
+    }
 }
