@@ -4,16 +4,16 @@
 //! reported as hit.
 //!
 //! Per axis the near plane (min for a positive direction, max for a
-//! negative one) is measured from the origin rounded so that the entry
-//! distance can only shrink, and the far plane from the origin rounded the
-//! other way; the remaining rounding (the f32 inverse, the subtraction and
+//! negative one) is measured from an f32 origin on the side that makes
+//! the entry distance only shrink, and the far plane from one on the other
+//! side (`bracket`); the remaining rounding (the f32 inverse, the subtraction and
 //! the product, a few units in the last place each) is covered by growing
 //! the exit distance by [`SLACK`] of itself. A NaN distance (origin on a
 //! plane of an axis the ray is parallel to) keeps the previous bound.
 
-use super::wide::{Node, W, round_down, round_up};
+use super::wide::{Node, W, round_down};
 use crate::math::Ray;
-use wide::{f32x8, i16x8, i32x8, u8x16};
+use wide::{f32x8, f64x4, i16x8, i32x8, u8x16};
 
 /// Relative growth of exit distances, 16 f32 units of roundoff.
 const SLACK: f32 = 1.0 / (1u32 << 20) as f32;
@@ -51,6 +51,8 @@ pub(super) struct Ray8 {
 impl Ray8 {
     #[inline]
     pub fn new(ray: &Ray, t_min: f64) -> Ray8 {
+        let d = ray.direction;
+        let inverse = (f64x4::splat(1.0) / f64x4::new([d.x, d.y, d.z, 1.0])).to_array();
         let mut r = Ray8 {
             negative: [false; 3],
             origin_near: [0.0; 3],
@@ -58,18 +60,15 @@ impl Ray8 {
             inverse: [0.0; 3],
             t_min: round_down(t_min),
         };
-        for k in 0..3 {
-            let inverse = 1.0 / ray.direction[k];
-            let (low, high) = (round_down(ray.origin[k]), round_up(ray.origin[k]));
+        for (k, &inverse) in inverse[..3].iter().enumerate() {
+            let (low, high) = bracket(ray.origin[k]);
             r.inverse[k] = inverse as f32;
-            if inverse < 0.0 {
-                r.negative[k] = true;
-                r.origin_near[k] = low;
-                r.origin_far[k] = high;
+            r.negative[k] = inverse < 0.0;
+            (r.origin_near[k], r.origin_far[k]) = if r.negative[k] {
+                (low, high)
             } else {
-                r.origin_near[k] = high;
-                r.origin_far[k] = low;
-            }
+                (high, low)
+            };
         }
         r
     }
@@ -105,4 +104,16 @@ fn lanes(q: &[u8; W]) -> f32x8 {
     let mut bytes = [0u8; 16];
     bytes[..W].copy_from_slice(q);
     f32x8::from_i32x8(i32x8::from_i16x8(i16x8::from_u8x16_low(u8x16::new(bytes))))
+}
+
+/// An f32 below and one above `v`, without branches: the nearest f32 moved
+/// by at least one unit in the last place (and by the smallest subnormal,
+/// for zero). Within two units of `v`, which only loosens the slab test a
+/// little; an origin beyond the f32 range gives NaN or an infinity, whose
+/// distances are NaN or infinite and bound nothing.
+#[inline(always)]
+fn bracket(v: f64) -> (f32, f32) {
+    let f = v as f32;
+    let step = f.abs() * f32::EPSILON + f32::from_bits(1);
+    (f - step, f + step)
 }
