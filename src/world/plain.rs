@@ -4,7 +4,7 @@
 //! and a loop over a few of them costs less than the dispatch and box tests
 //! of the general path.
 
-use crate::geometry::{Intersection, Plane, Sphere};
+use crate::geometry::{Intersection, Plane, Sphere, SphereTest};
 use crate::math::Ray;
 
 /// Shapes with the indices of their primitives in the world.
@@ -44,9 +44,9 @@ impl PlainShapes {
         }
         let ray = PreparedRay::new(ray);
         for (sphere, index) in &self.spheres {
-            if let Some(t) = ray.sphere_distance(sphere, t_min, *limit) {
-                *limit = t;
-                *best = Some((*index as usize, Intersection::new(t, 0.0, 0.0)));
+            if let Some(hit) = ray.sphere_hit(sphere, t_min, *limit) {
+                *limit = hit.t;
+                *best = Some((*index as usize, hit));
             }
         }
     }
@@ -61,7 +61,7 @@ impl PlainShapes {
                 let ray = PreparedRay::new(ray);
                 self.spheres
                     .iter()
-                    .any(|(sphere, _)| ray.sphere_distance(sphere, t_min, t_max).is_some())
+                    .any(|(sphere, _)| ray.sphere_hit(sphere, t_min, t_max).is_some())
             })
     }
 }
@@ -82,6 +82,18 @@ impl<'a> PreparedRay<'a> {
             ray,
             a,
             inverse_a: 1.0 / a,
+        }
+    }
+
+    /// [`Sphere::intersect`]: the prepared test below, or the sphere's own
+    /// for another test than the robust one.
+    #[inline(always)]
+    fn sphere_hit(&self, sphere: &Sphere, t_min: f64, t_max: f64) -> Option<Intersection> {
+        if sphere.test == SphereTest::Robust {
+            let t = self.sphere_distance(sphere, t_min, t_max)?;
+            Some(Intersection::new(t, 0.0, 0.0))
+        } else {
+            sphere.intersect(self.ray, t_min, t_max)
         }
     }
 
