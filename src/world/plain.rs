@@ -11,7 +11,10 @@ use crate::math::Ray;
 #[derive(Clone, Debug, Default)]
 pub struct PlainShapes {
     planes: Vec<(Plane, u32)>,
+    /// Spheres of the robust test, tested inline.
     spheres: Vec<(Sphere, u32)>,
+    /// Spheres of another test (a look's), by their own `intersect`.
+    other_spheres: Vec<(Sphere, u32)>,
 }
 
 impl PlainShapes {
@@ -20,7 +23,11 @@ impl PlainShapes {
     }
 
     pub fn push_sphere(&mut self, sphere: Sphere, primitive: usize) {
-        self.spheres.push((sphere, primitive as u32));
+        if sphere.test == SphereTest::Robust {
+            self.spheres.push((sphere, primitive as u32));
+        } else {
+            self.other_spheres.push((sphere, primitive as u32));
+        }
     }
 
     /// Lowers `limit` to the nearest hit in `(t_min, limit)` and records it
@@ -39,14 +46,20 @@ impl PlainShapes {
                 *best = Some((*index as usize, hit));
             }
         }
+        for (sphere, index) in &self.other_spheres {
+            if let Some(hit) = sphere.intersect(ray, t_min, *limit) {
+                *limit = hit.t;
+                *best = Some((*index as usize, hit));
+            }
+        }
         if self.spheres.is_empty() {
             return;
         }
         let ray = PreparedRay::new(ray);
         for (sphere, index) in &self.spheres {
-            if let Some(hit) = ray.sphere_hit(sphere, t_min, *limit) {
-                *limit = hit.t;
-                *best = Some((*index as usize, hit));
+            if let Some(t) = ray.sphere_distance(sphere, t_min, *limit) {
+                *limit = t;
+                *best = Some((*index as usize, Intersection::new(t, 0.0, 0.0)));
             }
         }
     }
@@ -61,8 +74,12 @@ impl PlainShapes {
                 let ray = PreparedRay::new(ray);
                 self.spheres
                     .iter()
-                    .any(|(sphere, _)| ray.sphere_hit(sphere, t_min, t_max).is_some())
+                    .any(|(sphere, _)| ray.sphere_distance(sphere, t_min, t_max).is_some())
             })
+            || self
+                .other_spheres
+                .iter()
+                .any(|(sphere, _)| sphere.intersect(ray, t_min, t_max).is_some())
     }
 }
 
@@ -82,18 +99,6 @@ impl<'a> PreparedRay<'a> {
             ray,
             a,
             inverse_a: 1.0 / a,
-        }
-    }
-
-    /// [`Sphere::intersect`]: the prepared test below, or the sphere's own
-    /// for another test than the robust one.
-    #[inline(always)]
-    fn sphere_hit(&self, sphere: &Sphere, t_min: f64, t_max: f64) -> Option<Intersection> {
-        if sphere.test == SphereTest::Robust {
-            let t = self.sphere_distance(sphere, t_min, t_max)?;
-            Some(Intersection::new(t, 0.0, 0.0))
-        } else {
-            sphere.intersect(self.ray, t_min, t_max)
         }
     }
 
