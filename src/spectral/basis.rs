@@ -208,7 +208,10 @@ mod tests {
         let red = locus_end(0.7347, 0.2653);
         for nm in (0..=60).map(|i| LAMBDA_MIN + i as f64) {
             let b = basis(nm);
-            assert!((0..3).all(|k| (b[k] - violet[k]).abs() < 0.01), "{nm}: {b:?}");
+            assert!(
+                (0..3).all(|k| (b[k] - violet[k]).abs() < 0.01),
+                "{nm}: {b:?}"
+            );
         }
         for nm in (0..=180).map(|i| 650.0 + i as f64) {
             assert_eq!(basis(nm), red, "{nm}");
