@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench bench-peers converge lookalike crosscheck crosscheck-glossy crosscheck-media mitsuba-converge gallery fuzz fuzz-seeds farm-test clean
+.PHONY: build render test lint bench bench-peers converge lookalike crosscheck crosscheck-glossy crosscheck-media crosscheck-dispersion mitsuba-converge gallery fuzz fuzz-seeds farm-test clean
 
 build:
 	$(CARGO) build --release
@@ -15,7 +15,7 @@ render: build
 	$(BIN) render $(SCENE) --spp $(SPP)
 
 test:
-	$(CARGO) test --release
+	$(CARGO) test --profile test-release
 
 lint:
 	$(CARGO) fmt --check
@@ -76,6 +76,21 @@ crosscheck-media: build
 	$(VENV)/bin/python scripts/crosscheck.py --variant $(VARIANT) --look physical \
 		--scene $(MEDIA_SCENE) --max-depth 32 --spp 256 --reference-spp 2048 \
 		--width 128 --height 96 --tolerance 0.01 --out output/$(basename $(notdir $(MEDIA_SCENE)))
+
+# Dispersion against Mitsuba 3, whose dielectric has one index: Mitsuba
+# renders testcases/crosscheck_dispersion.txt's glass at fixed indices and
+# scripts/crosscheck_dispersion.py composes them: one channel from each of
+# three renders for per-channel indices (--dispersion R,G,B), and for
+# Cauchy's index 17 indices integrated with our sensor's weights
+# (examples/spectral_sensor.rs). About 15 minutes on 2 cores.
+crosscheck-dispersion: build
+	python3 -m venv $(VENV)
+	$(VENV)/bin/pip install -q mitsuba numpy
+	$(CARGO) build --release --example spectral_sensor
+	$(VENV)/bin/python scripts/crosscheck_dispersion.py --variant $(VARIANT) --mode channels \
+		--reference-spp 1024
+	$(VENV)/bin/python scripts/crosscheck_dispersion.py --variant $(VARIANT) --mode cauchy \
+		--reference-spp 256
 
 # Mitsuba's error-against-time curve (same CSV as `make converge`), into
 # output/curves/<scene>/ (venv from `make crosscheck`):

@@ -4,6 +4,7 @@
     python3 scripts/crosscheck.py [--scene testcases/crosscheck.txt] [--spp 64]
         [--reference-spp 1024] [--width 256 --height 192] [--variant scalar_rgb]
         [--seed 1] [--out output/crosscheck] [--mitsuba-only] [--tolerance 0.03]
+        [--match-filter]
 
 Steps: (a) translate the scene into a Mitsuba scene dict (a small, tolerant
 reader of the canonical grammar of docs/scene-format.md Part 1); (b) render
@@ -24,6 +25,9 @@ How the estimators are matched:
   diffuse, mirror -> conductor 'none', mixtures -> blendbsdf by the rates,
   glass -> dielectric (ours uses Schlick's Fresnel: glass differs slightly);
 - film: box filter (ours: 2x2 sub-pixel tent), so edges differ slightly;
+  --match-filter renders Mitsuba at twice the size with a tent of radius 1
+  and samples beyond the border, and averages 2x2 blocks: the expectation
+  of our filter in every pixel (--spp is then per pixel of our size);
 - depth of field -> thinlens (focal plane at focusDistance along the view
   direction, uniform disk of radius interfereRatio, rays start at near_clip =
   canvasDistance, as ours);
@@ -194,14 +198,20 @@ def read_fields(block, shapes):
 
 
 CAMERA_FIELDS = {"center": 3, "direction": 3, "up": 3, "width": 1, "height": 1, "angle": 1,
-                 "canvasDistance": 1, "focusDistance": 1, "interfereRatio": 1}
+                 "canvasDistance": 1, "focusDistance": 1, "interfereRatio": 1,
+                 # Cambrian's flag that turns materials' `cauchy` on (see
+                 # scripts/crosscheck_dispersion.py; here: one index)
+                 "dispersion": 0}
 MATERIAL_FIELDS = {"color": 3, "diffuseColor": 3, "emission": 3, "diffusionRate": 1,
                    "specularRate": 1, "refractRate": 1, "refractiveIndex": 1, "texture": "word",
                    "specularColor": 3, "shininess": 1, "roughness": 1,
                    # Cambrian (cam) dialect: `type DIFF|SPEC|REFR`, IOR `refractive_rate`
                    "type": "word", "refractive_rate": 1, "texture_file": "word",
                    # participating media (README "Participating media")
-                   "interface": 0}
+                   "interface": 0,
+                   # dispersion (README "Dispersion"): Mitsuba's dielectric takes
+                   # one index, `ior` (crosscheck_dispersion.py sets it per render)
+                   "cauchy": 2}
 MEDIUM_FIELDS = {"sigmaA": 3, "sigma_a": 3, "sigmaS": 3, "sigma_s": 3, "g": 1}
 
 
@@ -362,7 +372,7 @@ class Scene:
                 "interior": interior, "interface": f.get("interface", False),
                 "color": color, "emission": f.get("emission", [0.0, 0.0, 0.0]),
                 "diffuse": diffuse, "specular": specular, "refract": refract,
-                "ior": ior, "texture": texture,
+                "ior": ior, "texture": texture, "cauchy": f.get("cauchy"),
                 "roughness": f.get("roughness", [0.0])[0]})
 
     def add(self, kind, matrix, **fields):
@@ -604,6 +614,15 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
     T = mi.ScalarTransform4f
     media = scene.medium is not None or any(m["interior"] for m in scene.materials)
     max_depth = getattr(args, "max_depth", None)
+    film = {"type": "hdrfilm", "width": args.width, "height": args.height,
+            "rfilter": {"type": "box"}, "pixel_format": "rgb", "component_format": "float32"}
+    if getattr(args, "match_filter", False):
+        # Ours: each pixel's samples go to its 2x2 sub-pixels, each spread by
+        # a tent of half-width one sub-pixel. Mitsuba at twice the size with
+        # a tent of radius 1 (its pixels) and samples beyond the border has
+        # that expectation in each of its pixels; downsample() averages them.
+        film = dict(film, width=2 * args.width, height=2 * args.height,
+                    rfilter={"type": "tent", "radius": 1.0}, sample_border=True)
     d = {
         "type": "scene",
         "integrator": {"type": "volpath" if media else "path",
@@ -618,9 +637,7 @@ def mitsuba_scene_dict(mi, scene, args, spp, tmpdir):
             **lens,
             "near_clip": float(canvas) if canvas > 1e-4 else 1e-4,
             "far_clip": 1e7,
-            "film": {"type": "hdrfilm", "width": args.width, "height": args.height,
-                     "rfilter": {"type": "box"}, "pixel_format": "rgb",
-                     "component_format": "float32"},
+            "film": film,
             "sampler": {"type": "independent", "sample_count": spp},
         },
     }
@@ -826,10 +843,22 @@ def metrics(test, reference):
     }
 
 
+def downsample(image):
+    """The mean of each 2x2 block: a --match-filter render at our size."""
+    h, w = image.shape[0] // 2, image.shape[1] // 2
+    blocks = image[:2 * h, :2 * w].astype(np.float64).reshape(h, 2, w, 2, -1)
+    return blocks.mean(axis=(1, 3)).astype(np.float32)
+
+
 def render_mitsuba(mi, scene_dict, spp, seed, pass_spp):
     """Renders in passes of at most pass_spp samples (the JIT variants keep one
     lane per sample in memory) and averages them: with a box filter every pass
-    is a plain mean, so the average of equal passes is the mean of all samples."""
+    is a plain mean, so the average of equal passes is the mean of all samples.
+    `spp` counts samples per pixel of our size: a --match-filter render (twice
+    the size) takes a quarter of them in each of its pixels."""
+    matched = scene_dict["sensor"]["film"]["rfilter"]["type"] == "tent"
+    if matched:
+        spp, pass_spp = -(-spp // 4), max(1, pass_spp // 4)
     passes = [pass_spp] * (spp // pass_spp) + ([spp % pass_spp] if spp % pass_spp else [])
     t0 = time.perf_counter()
     loaded = mi.load_dict(scene_dict)
@@ -839,7 +868,10 @@ def render_mitsuba(mi, scene_dict, spp, seed, pass_spp):
         image = np.array(mi.render(loaded, spp=n, seed=seed * 7919 + index), dtype=np.float64)
         total = image * n if total is None else total + image * n
     t2 = time.perf_counter()
-    return (total / spp)[..., :3].astype(np.float32), t1 - t0, t2 - t1
+    image = (total / spp)[..., :3].astype(np.float32)
+    if matched:
+        image = downsample(image)
+    return image, t1 - t0, t2 - t1
 
 
 def render_ours(args, out_path):
@@ -894,6 +926,9 @@ def main():
                              "default: the look's, 5")
     parser.add_argument("--tolerance", type=float, default=0.03,
                         help="largest accepted |mean ratio - 1| per channel")
+    parser.add_argument("--match-filter", action="store_true",
+                        help="Mitsuba at twice the size with a tent filter, averaged down: "
+                             "the expectation of our 2x2 sub-pixel tents in every pixel")
     args = parser.parse_args()
     os.chdir(ROOT)
     os.makedirs(args.out, exist_ok=True)
@@ -911,6 +946,9 @@ def main():
         args.pass_spp = 64 if args.variant.startswith("llvm") else max(args.spp, args.reference_spp)
 
     scene = Scene(args.scene, dialect=args.dialect)
+    if scene.camera.get("dispersion") and any(m.get("cauchy") for m in scene.materials):
+        warn("dispersive glass (cauchy with the camera's flag): Mitsuba gets one index, ours "
+             "disperses; scripts/crosscheck_dispersion.py compares dispersion")
     tmpdir = os.path.join(args.out, "mitsuba_inputs")
     os.makedirs(tmpdir, exist_ok=True)
     scene_dict = mitsuba_scene_dict(mi, scene, args, args.spp, os.path.abspath(tmpdir))
@@ -946,7 +984,9 @@ def main():
         "mitsuba": dict(seconds=mts_time, load_seconds=mts_load, **metrics(mitsuba, reference)),
         "ours": None,
         "notes": [
-            "pixel filter differs: Mitsuba box, ours a 2x2 sub-pixel tent; edges differ slightly",
+            ("pixel filter matched: Mitsuba at twice the size, tent of radius 1, averaged 2x2"
+             if args.match_filter else
+             "pixel filter differs: Mitsuba box, ours a 2x2 sub-pixel tent; edges differ slightly"),
             "Mitsuba samples emitters (NEE + MIS), ours does not: equal expectation, "
             "different variance",
             "max_depth 6 (6 segments = ours: 5 scattering vertices), rr_depth 100",
@@ -998,8 +1038,10 @@ def main():
             status = status or 1
         else:
             print(f"agreement: mean ratio within {off:.4f} of 1 (tolerance {args.tolerance})")
-    print("note: pixel filters differ (Mitsuba box, ours 2x2 tent): edges differ slightly; "
-          "both sample lights (ours with --integrator path, the default)")
+    if not args.match_filter:
+        print("note: pixel filters differ (Mitsuba box, ours 2x2 tent): edges differ slightly "
+              "(--match-filter matches them)")
+    print("note: both sample lights (ours with --integrator path, the default)")
     with open(os.path.join(args.out, "crosscheck.json"), "w") as f:
         json.dump(report, f, indent=2)
     print(f"wrote {os.path.join(args.out, 'crosscheck.json')}")

@@ -11,6 +11,12 @@
 # its curves are drawn too, in the same run: how a change moves
 # time-to-error ("baseline path" against "path").
 #
+# Every scene renders in the ported renderer's look (LOOK=original: five
+# scattering vertices, Schlick glass), the conventions Mitsuba's translation
+# follows (scripts/crosscheck.py: max_depth 6), so that both render the same
+# scene; `sample_rec`'s own look (`cambrian`: no depth limit, Cambrian's
+# sphere test) would be another image.
+#
 # Our reference is the path integrator at REF_SPP (the same expected image as
 # the original estimator: tests/integrator_agreement.rs); Mitsuba's error is
 # measured against Mitsuba's own reference, since its translation of a scene
@@ -23,6 +29,7 @@ H=${H:-192}
 MAX_SPP=${MAX_SPP:-256}
 REF_SPP=${REF_SPP:-4096}
 VARIANT=${VARIANT:-llvm_ad_rgb}
+LOOK=${LOOK:-original}
 SCENES=${SCENES:-"sample_rec report_scene15_spheres report_scene11_dragons"}
 BIN=target/release/pathtracer
 PYTHON=${PYTHON:-.venv-crosscheck/bin/python}
@@ -39,21 +46,22 @@ mkdir -p docs/curves
 for name in $SCENES; do
     scene=$(scene_path "$name")
     out=output/curves/$name
+    reference=$out/ours_reference_$LOOK.pfm
     mkdir -p "$out"
-    if [ ! -f "$out/ours_reference.pfm" ]; then
+    if [ ! -f "$reference" ]; then
         $BIN render "$scene" --width "$W" --height "$H" --spp "$REF_SPP" --seed 4242 \
-            --integrator path -o "$out/ours_reference.pfm" --quiet
+            --integrator path --look "$LOOK" -o "$reference" --quiet
     fi
     for integrator in original path; do
         $BIN converge "$scene" --width "$W" --height "$H" --max-spp "$MAX_SPP" --seed 1 \
-            --integrator "$integrator" --reference "$out/ours_reference.pfm" \
+            --integrator "$integrator" --look "$LOOK" --reference "$reference" \
             --csv "$out/ours_$integrator.csv" --plot "$out/ours_$integrator.svg" > /dev/null
     done
     curves=("original=$out/ours_original.csv" "path=$out/ours_path.csv")
     if [ -n "${BASELINE:-}" ]; then
         for integrator in original path; do
             "$BASELINE" converge "$scene" --width "$W" --height "$H" --max-spp "$MAX_SPP" \
-                --seed 1 --integrator "$integrator" --reference "$out/ours_reference.pfm" \
+                --seed 1 --integrator "$integrator" --look "$LOOK" --reference "$reference" \
                 --csv "$out/baseline_$integrator.csv" --plot "$out/baseline_$integrator.svg" \
                 > /dev/null
             curves+=("baseline $integrator=$out/baseline_$integrator.csv")
@@ -62,7 +70,7 @@ for name in $SCENES; do
     if [ -x "$PYTHON" ]; then
         $PYTHON scripts/mitsuba_converge.py --scene "$scene" --variant "$VARIANT" \
             --width "$W" --height "$H" --max-spp "$MAX_SPP" --reference-spp "$REF_SPP" \
-            --our-reference "$out/ours_reference.pfm" --out "$out" > "$out/mitsuba.log"
+            --our-reference "$reference" --out "$out" > "$out/mitsuba.log"
         curves+=("mitsuba $VARIANT=$out/mitsuba_${VARIANT}_converge.csv")
     else
         echo "note: $PYTHON not found (make crosscheck installs it): no Mitsuba curve" >&2

@@ -48,7 +48,11 @@ impl PixelSum {
             return;
         }
         let mut l = sample.luminance();
-        if self.samples >= FIREFLY_MIN_SAMPLES {
+        // With no negative sum the mean is at least 0 and the bound at least
+        // FIREFLY_FACTOR * FIREFLY_FLOOR: most samples need not convert the
+        // sums to find the mean.
+        let may_exceed = l > FIREFLY_FACTOR * FIREFLY_FLOOR || self.sum.has_negative();
+        if self.samples >= FIREFLY_MIN_SAMPLES && may_exceed {
             let mean = self.sum.to_color().luminance() / self.samples as f64;
             if l > FIREFLY_FACTOR * (mean + FIREFLY_FLOOR) {
                 self.fireflies += 1;

@@ -50,6 +50,12 @@ impl FixedColor {
         }
     }
 
+    /// Whether a channel's sum is below zero.
+    #[inline]
+    pub fn has_negative(&self) -> bool {
+        self.channels.iter().any(|&c| c < 0)
+    }
+
     pub fn to_color(&self) -> Color {
         let [r, g, b] = self.channels;
         Color::new(r as f64 / SCALE, g as f64 / SCALE, b as f64 / SCALE)

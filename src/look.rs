@@ -10,7 +10,7 @@
 //! | `original` | the ported renderer (canonical dialect) | path tracing | 5 | background for camera rays | when the scene has no emitter | yes | Schlick |
 //! | `physical` | this project's physically based rendering | path tracing | 5 | background, weighted, at every depth | when the scene has no emitter | yes | exact Fresnel |
 //! | `pa1` | the course framework's ray caster (Achazwl, aliezlo `rc`, Cambrian's first renders) | ray casting: Phong per light, no shadows, pixel centres | 1 | background | always | the framework's | none |
-//! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick; texels times the colour, its texture frames, its dispersion (one wavelength per camera sample times its colour) |
+//! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick; its sphere test (frosted glass balls); texels times the colour, its texture frames, its dispersion (one wavelength per camera sample times its colour) |
 //! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing by BSDF sampling, rays leaving from the hit itself | 15 hits | background, unweighted, at every depth | never | no | Schlick; planes one-sided; square lens |
 //! | `osb` | one-step-beh1nd | path tracing | unlimited (roulette) | black | never | no | reflect with 0.25 + R/2, unweighted; osb's `glossy` weight |
 //! | `ylc` | ylc2001 | path tracing | unlimited (roulette) | background, unweighted | never | no | Schlick |
@@ -25,10 +25,12 @@ use std::sync::Arc;
 use crate::bsdf::DielectricFresnel;
 use crate::bsdf::build::LookLobes;
 use crate::color::Color;
+use crate::geometry::SphereTest;
 use crate::integrator::Integrator;
 use crate::math::Vec3;
 use crate::medium::{HenyeyGreenstein, Medium};
 use crate::scene::model::{CameraDesc, Dialect, FovAxis, LensShape, Scene};
+use crate::world::ShapeRules;
 
 /// How radiance is estimated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -170,6 +172,8 @@ pub struct Look {
     /// The lens shape the renderer gives every camera (`None`: the scene's).
     pub lens_shape: Option<LensShape>,
     pub dispersion_sensor: DispersionSensor,
+    /// How spheres meet rays (Cambrian's test for its glass balls).
+    pub sphere_test: SphereTest,
 }
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -196,6 +200,7 @@ impl Look {
         osb_glossy: false,
         lens_shape: None,
         dispersion_sensor: DispersionSensor::Spectral,
+        sphere_test: SphereTest::Robust,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -226,6 +231,7 @@ impl Look {
         texture_times_color: true,
         texture_frames: TextureFrames::Cambrian,
         dispersion_sensor: DispersionSensor::Cambrian,
+        sphere_test: SphereTest::Cambrian,
         ..Look::ORIGINAL
     };
 
@@ -323,6 +329,14 @@ impl Look {
                 .textures
                 .iter_mut()
                 .for_each(|texture| Arc::make_mut(texture).flip_rows());
+        }
+    }
+
+    /// How this look's shapes meet rays.
+    pub fn shape_rules(&self) -> ShapeRules {
+        ShapeRules {
+            one_sided_planes: self.one_sided_planes,
+            sphere_test: self.sphere_test,
         }
     }
 

@@ -25,6 +25,8 @@ pub struct Shading<'a> {
     /// Whether the ray arrived from the outside (the side the geometric normal
     /// points to): decides entering or leaving glass for every shape.
     pub entering: bool,
+    /// Rays leave from `point` itself (see [`WorldHit::leaves_from_point`]).
+    pub leaves_from_point: bool,
 }
 
 impl<'a> Shading<'a> {
@@ -61,6 +63,7 @@ impl<'a> Shading<'a> {
             geometric,
             normal,
             entering,
+            leaves_from_point: hit.leaves_from_point,
         }
     }
 
@@ -74,9 +77,13 @@ impl<'a> Shading<'a> {
 
     /// The origin of a ray leaving this point in `direction`: pushed off the
     /// surface along the geometric normal, to the side the ray goes to (see
-    /// [`offset_origin`]), so that it cannot re-hit the surface.
+    /// [`offset_origin`]), so that it cannot re-hit the surface; or the
+    /// point itself where the hit [`leaves_from_point`](Self::leaves_from_point).
     #[inline]
     pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
+        if self.leaves_from_point {
+            return self.point;
+        }
         offset_origin(&self.point, &self.geometric, direction)
     }
 }

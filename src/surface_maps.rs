@@ -97,6 +97,7 @@ mod tests {
             material: 0,
             primitive: 0,
             element: 0,
+            leaves_from_point: false,
         }
     }
 

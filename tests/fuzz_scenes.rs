@@ -133,7 +133,7 @@ fn small_assets(text: &str, base: &Path) -> bool {
 fn render_tiny(mut scene: Scene) -> Result<(), String> {
     let (look, _) = Look::detect(&scene);
     look.adapt(&mut scene);
-    let world = World::build_with(&scene, look.one_sided_planes);
+    let world = World::build_with(&scene, look.shape_rules());
     let own = look.estimator.integrator();
     let integrators: &[Integrator] = if own == Integrator::Path {
         &[Integrator::Path]

@@ -107,6 +107,62 @@ fn a_scattering_ball_in_a_white_furnace_returns_the_background() {
 }
 
 #[test]
+fn a_grey_scattering_ball_in_a_white_furnace_returns_the_background_exactly() {
+    // With the same extinction in every channel, every weight of a path in
+    // a non-absorbing medium is exactly 1 (a collision's albedo, a pass's
+    // transmittance over its probability, the phase function over its
+    // density, a Fresnel choice at a white glass over its probability):
+    // each sample, not only the mean, returns the background. Behind an
+    // interface and behind a glass boundary.
+    let medium = Medium {
+        sigma_a: Color::BLACK,
+        sigma_s: Color::gray(1.5),
+        phase: HenyeyGreenstein { g: -0.4 },
+    };
+    let interface = Material {
+        interface: true,
+        interior: Some(medium),
+        ..Material::default()
+    };
+    let glass = Material {
+        color: Color::WHITE,
+        diffuse: 0.0,
+        refract: 1.0,
+        ior: 1.5,
+        interior: Some(medium),
+        ..Material::default()
+    };
+    for ball in [interface, glass] {
+        let mut scene = Scene::new(
+            vec![ball],
+            Object::Group(vec![sphere(Vec3::zeros(), 1.0, 0)]),
+        );
+        scene.background = Color::gray(1.0);
+        let world = World::build(&scene);
+        let mut view = SceneView::with_look(&scene, &world, Look::PHYSICAL);
+        view.max_depth = 1000;
+        let origin = Vec3::new(0.1, 0.2, 3.0);
+        for i in 0..5_000 {
+            let mut rng = Rng::for_sample(i, 0, 13);
+            let target =
+                Vec3::new(rng.next_f64(), rng.next_f64(), 0.0) * 1.4 - Vec3::new(0.7, 0.7, 0.0);
+            let ray = Ray::new(origin, (target - origin).normalize(), 0.0);
+            let mut sampler = Sampler::Independent(rng);
+            let l = Integrator::Path.radiance(
+                &view,
+                ray,
+                &CameraSample::default(),
+                &mut sampler,
+                &mut Splats::default(),
+            );
+            for v in [l.r, l.g, l.b] {
+                assert!((v - 1.0).abs() < 1e-12, "sample {i}: {l:?}");
+            }
+        }
+    }
+}
+
+#[test]
 fn a_scattering_medium_inside_an_emitting_enclosure_returns_its_emission() {
     // A black sphere of emission 1 filled by a scene-wide non-absorbing
     // medium: radiance 1 everywhere. Light reaches medium vertices by light

@@ -371,7 +371,7 @@ pub fn prepare(scene: &mut Scene, settings: &RenderSettings) -> World {
     for notice in pathtracer::integrator::dispersion_notes(scene, settings.integrator) {
         eprintln!("{notice}");
     }
-    World::build_with(scene, settings.look.one_sided_planes)
+    World::build_with(scene, settings.look.shape_rules())
 }
 
 /// `output/<scene name><suffix>`.

@@ -3,6 +3,7 @@
 //! one hit that survives (point, normals, uv and the derivatives of the point
 //! with respect to uv).
 
+pub mod cambrian_sphere;
 pub mod curve;
 pub mod disk;
 pub mod mesh;
@@ -25,7 +26,7 @@ pub use plane::Plane;
 pub use rectangle::Rectangle;
 pub use revolution::Revolution;
 pub use shape::Shape;
-pub use sphere::Sphere;
+pub use sphere::{Sphere, SphereTest};
 pub use transform::Transform;
 pub use triangle::Triangle;
 

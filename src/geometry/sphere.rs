@@ -2,11 +2,26 @@
 
 use std::f64::consts::PI;
 
+use super::cambrian_sphere;
 use super::{
     Intersection, SurfaceHit, derivatives_or_fallback, fallback_derivatives, normalize_or,
 };
 use crate::math::{Aabb, Point3, Ray, Vec3};
 use crate::world::UvMapping;
+
+/// The rules of a sphere's ray test.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SphereTest {
+    /// The robust quadratic, points re-projected onto the sphere, rays
+    /// leaving off the surface.
+    #[default]
+    Robust,
+    /// Cambrian's (see [`cambrian_sphere`]): inside by the origin's
+    /// distance, no far root from outside, the normal inwards from inside
+    /// (an [`Intersection`]'s `u` is 1 for such a hit), and rays leaving
+    /// from the hit point itself.
+    Cambrian,
+}
 
 #[derive(Clone, Copy, Debug)]
 pub struct Sphere {
@@ -14,6 +29,7 @@ pub struct Sphere {
     pub radius: f64,
     /// Displacement of the centre over the shutter interval: `center + motion * time`.
     pub motion: Vec3,
+    pub test: SphereTest,
 }
 
 impl Sphere {
@@ -22,6 +38,7 @@ impl Sphere {
             center,
             radius: radius.abs(),
             motion,
+            test: SphereTest::Robust,
         }
     }
 
@@ -35,6 +52,14 @@ impl Sphere {
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
         let center = self.center_at(ray.time);
+        if self.test == SphereTest::Cambrian {
+            let hit = cambrian_sphere::intersect(&center, self.radius, ray, t_min, t_max)?;
+            return Some(Intersection::new(
+                hit.t,
+                f64::from(u8::from(hit.inside)),
+                0.0,
+            ));
+        }
         let f = ray.origin - center;
         let d = ray.direction;
         let a = d.norm_squared();
@@ -68,6 +93,7 @@ impl Sphere {
         let w = normalize_or(ray.at(hit.t) - center, Vec3::y());
         // Re-project onto the sphere: the point's error is then relative to |point|.
         let point = center + w * self.radius;
+        let (point, normal) = self.as_computed(ray, hit, point, w);
         let u = 0.5 - w.z.atan2(w.x) / (2.0 * PI);
         let v = 0.5 + w.y.clamp(-1.0, 1.0).asin() / PI;
         // w = (cos lat cos phi, sin lat, cos lat sin phi) with phi = 2pi (1/2 - u)
@@ -79,8 +105,8 @@ impl Sphere {
         let (dpdu, dpdv) = derivatives_or_fallback(dpdu, dpdv, &w);
         SurfaceHit {
             point,
-            geometric_normal: w,
-            shading_normal: w,
+            geometric_normal: normal,
+            shading_normal: normal,
             dpdu,
             dpdv,
             uv: [u, v],
@@ -94,14 +120,35 @@ impl Sphere {
         let center = self.center_at(ray.time);
         let w = normalize_or(ray.at(hit.t) - center, Vec3::y());
         let (dpdu, dpdv) = fallback_derivatives(&w);
+        let (point, normal) = self.as_computed(ray, hit, center + w * self.radius, w);
         SurfaceHit {
-            point: center + w * self.radius,
-            geometric_normal: w,
-            shading_normal: w,
+            point,
+            geometric_normal: normal,
+            shading_normal: normal,
             dpdu,
             dpdv,
             uv: [0.0, 0.0],
             uv_mapping: UvMapping::Unit,
+        }
+    }
+
+    /// The hit point and geometric normal by the sphere's test, from the
+    /// robust ones (`point` on the sphere, outward unit `normal`).
+    #[inline]
+    fn as_computed(
+        &self,
+        ray: &Ray,
+        hit: &Intersection,
+        point: Point3,
+        normal: Vec3,
+    ) -> (Point3, Vec3) {
+        match self.test {
+            SphereTest::Robust => (point, normal),
+            SphereTest::Cambrian => {
+                let point = ray.at(hit.t);
+                let inside = hit.u != 0.0;
+                (point, if inside { -normal } else { normal })
+            }
         }
     }
 

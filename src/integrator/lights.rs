@@ -156,6 +156,7 @@ mod tests {
             geometric: normal,
             normal,
             entering: true,
+            leaves_from_point: false,
         };
         let to_light = Vec3::new(0.6, 0.0, 0.8);
         let light = Light::Directional {
@@ -208,6 +209,7 @@ mod tests {
             geometric: normal,
             normal,
             entering: true,
+            leaves_from_point: false,
         };
         let mut set = LobeSet::default();
         let lambert = Lambert {

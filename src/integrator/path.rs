@@ -175,6 +175,9 @@ pub fn radiance(
         let arrived_from = origin.take();
         let direction = scattered.wi;
         if scattered.delta {
+            if caustics::crosses_nonreciprocal(&at, &scattered.wi) {
+                track = None;
+            }
             count_chain_vertex(&mut track);
         } else {
             let smooth = bsdf.smooth_probability();

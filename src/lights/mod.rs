@@ -22,12 +22,14 @@ pub mod emission;
 pub mod emitter;
 
 #[cfg(test)]
+mod camera_side_tests;
+#[cfg(test)]
 mod tests;
 
 use crate::color::Color;
 use crate::geometry::{Shape, Transform};
 use crate::math::{Point3, Vec3, orthonormal_basis, transform_point, transform_vector};
-use crate::scene::model::Scene;
+use crate::scene::model::{CameraDesc, Scene};
 use crate::world::{Primitive, World, WorldHit};
 
 pub use cut::{CutPlane, Cuts};
@@ -116,7 +118,9 @@ impl Emitters {
         // samples of a small sphere beside it for the 600-radius sphere it
         // is, and a light behind a wall would take its share for nothing.
         // (Only efficiency: an emitter left out is found by the bounces.)
-        let camera = scene.camera.center;
+        // The camera's side is the canvas's, where its rays start: smallpt's
+        // eye is behind the box's front wall.
+        let camera = canvas_centre(&scene.camera);
         let weights: Vec<f64> = entries
             .iter()
             .map(|e| e.emission.luminance().max(0.0) * e.shape.reachable_area(&camera, &planes))
@@ -292,4 +296,13 @@ fn similarity_scale(transform: &Transform) -> Option<f64> {
     }
     let off = (gram - nalgebra::Matrix3::identity() * scale_squared).amax();
     (off <= SIMILARITY_TOLERANCE * scale_squared).then(|| scale_squared.sqrt())
+}
+
+/// Where the camera's rays start on its axis: the centre of its canvas
+/// (the eye when the canvas distance is 0).
+fn canvas_centre(camera: &CameraDesc) -> Point3 {
+    match camera.direction.try_normalize(0.0) {
+        Some(direction) => camera.center + direction * camera.canvas_distance,
+        None => camera.center,
+    }
 }

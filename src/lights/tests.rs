@@ -364,7 +364,13 @@ fn a_one_sided_plane_cuts_nothing_seen_from_behind() {
         },
     ]);
     let scene = scene(vec![Material::default(), emissive], root);
-    let world = World::build_with(&scene, true);
+    let world = World::build_with(
+        &scene,
+        crate::world::ShapeRules {
+            one_sided_planes: true,
+            ..Default::default()
+        },
+    );
     let emitters = Emitters::build(&scene, &world);
     let mut rng = Rng::new(5, 6);
     // Above the ceiling every ray passes it: the whole sphere is in view,

@@ -257,11 +257,26 @@ impl SobolStream {
         self.values = group_values(group_seed, self.sample_index);
     }
 
-    /// The next two dimensions, starting from an even one.
+    /// The next two dimensions, starting from an even one. A Sobol' pair
+    /// lies within one group of four (pairs start at even dimensions), so
+    /// both values are read at once.
     #[inline]
     pub fn next_2d(&mut self) -> [f64; 2] {
-        if self.dimension % 2 == 1 && self.dimension < SOBOL_DIMENSIONS {
-            self.next_f64();
+        if self.dimension < SOBOL_DIMENSIONS {
+            // Skip to an even dimension.
+            let first = (self.dimension + 1) & !1;
+            self.dimension = first;
+            if first < SOBOL_DIMENSIONS {
+                let in_group = first as usize % sobol::DIMENSIONS;
+                if in_group == 0 {
+                    self.start_group();
+                }
+                self.dimension = first + 2;
+                return [
+                    to_unit(self.values[in_group]),
+                    to_unit(self.values[in_group + 1]),
+                ];
+            }
         }
         [self.next_f64(), self.next_f64()]
     }

@@ -132,6 +132,37 @@ fn next_2d_starts_at_an_even_dimension() {
     assert_eq!(pair[1], sobol_sample(1, 2, 3, 3));
 }
 
+#[test]
+fn pairs_and_single_values_in_any_order_equal_addressed_samples() {
+    let mut rng = Rng::new(7, 8);
+    for round in 0..200u64 {
+        let (pixel, index, seed) = (round % 13, round * 7 + 1, round % 3);
+        let mut stream = SobolStream::new(pixel, index, seed);
+        while stream.dimension() < 24 {
+            if rng.next_f64() < 0.5 {
+                let dimension = stream.dimension();
+                let value = stream.next_f64();
+                let expected = sobol_sample(pixel, index, dimension, seed);
+                assert_eq!(value.to_bits(), expected.to_bits());
+            } else {
+                // Pairs start at an even dimension among the Sobol' ones.
+                let dimension = stream.dimension();
+                let first = if dimension < SOBOL_DIMENSIONS {
+                    dimension + dimension % 2
+                } else {
+                    dimension
+                };
+                let pair = stream.next_2d();
+                for (k, value) in pair.into_iter().enumerate() {
+                    let expected = sobol_sample(pixel, index, first + k as u32, seed);
+                    assert_eq!(value.to_bits(), expected.to_bits(), "{dimension} {k}");
+                }
+                assert_eq!(stream.dimension(), first + 2);
+            }
+        }
+    }
+}
+
 /// Pearson correlation of two equally long series.
 fn correlation(xs: &[f64], ys: &[f64]) -> f64 {
     let n = xs.len() as f64;

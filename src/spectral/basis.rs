@@ -12,6 +12,11 @@
 //! 1931 2° observer by Wyman, Sloan and Shirley ("Simple Analytic
 //! Approximations to the CIE XYZ Color Matching Functions", JCGT 2013),
 //! turned into linear sRGB by the XYZ-to-sRGB matrix of IEC 61966-2-1.
+//! The fit's tails have the wrong colour (beyond 730 nm its ȳ outlasts x̄,
+//! which made deep red light green; below 390 nm it turns violet
+//! green-blue), while the true spectral locus hardly moves there: outside
+//! [`FIT_SHORTEST`], [`FIT_LONGEST`] the basis keeps its value at the
+//! nearer end.
 
 use std::sync::OnceLock;
 
@@ -21,6 +26,14 @@ use crate::color::Color;
 pub const LAMBDA_MIN: f64 = 360.0;
 /// The longest wavelength a path is given, in nanometres.
 pub const LAMBDA_MAX: f64 = 830.0;
+
+/// Below this wavelength (nm) the basis is its value here: the fit's
+/// violet (red 0.15, blue 0.85), where the CIE 1931 locus's end, x 0.1741,
+/// y 0.0050, gives red 0.15, blue 0.85 in the basis.
+pub const FIT_SHORTEST: f64 = 420.0;
+/// Above this wavelength (nm) the basis is its value here: pure red, as
+/// the CIE 1931 locus is from about 610 nm on.
+pub const FIT_LONGEST: f64 = 650.0;
 
 /// Intervals of the Gram matrix's quadrature (Simpson, 0.05 nm).
 const GRAM_INTERVALS: usize = 9400;
@@ -54,12 +67,13 @@ pub fn srgb_matching(nm: f64) -> [f64; 3] {
 }
 
 /// The partition of unity `B_r, B_g, B_b` at `nm`: nonnegative, summing
-/// to 1 (zero outside [`LAMBDA_MIN`], [`LAMBDA_MAX`]).
+/// to 1 (zero outside [`LAMBDA_MIN`], [`LAMBDA_MAX`]; constant outside
+/// [`FIT_SHORTEST`], [`FIT_LONGEST`]).
 pub fn basis(nm: f64) -> [f64; 3] {
     if !(LAMBDA_MIN..=LAMBDA_MAX).contains(&nm) {
         return [0.0; 3];
     }
-    let positive = srgb_matching(nm).map(|v| v.max(0.0));
+    let positive = srgb_matching(nm.clamp(FIT_SHORTEST, FIT_LONGEST)).map(|v| v.max(0.0));
     let sum: f64 = positive.iter().sum();
     if sum > 0.0 {
         positive.map(|v| v / sum)
@@ -171,6 +185,39 @@ mod tests {
             (0..3).max_by(|&i, &j| b[i].total_cmp(&b[j])).unwrap_or(0)
         };
         assert_eq!([largest(650.0), largest(540.0), largest(450.0)], [0, 1, 2]);
+    }
+
+    #[test]
+    fn light_beyond_the_visible_ends_keeps_the_colour_of_the_ends() {
+        // Deep red light is red (the fit alone made 740-830 nm green, half
+        // of the green sensor's weight), and the shortest wavelengths are
+        // violet as the CIE locus's end is (the fit alone made them
+        // green-blue).
+        let locus_end = |x: f64, y: f64| {
+            let xyz = [x / y, 1.0, (1.0 - x - y) / y];
+            let m = [
+                [3.2404542, -1.5371385, -0.4985314],
+                [-0.9692660, 1.8760108, 0.0415560],
+                [0.0556434, -0.2040259, 1.0572252],
+            ];
+            let rgb = m.map(|row| (row[0] * xyz[0] + row[1] * xyz[1] + row[2] * xyz[2]).max(0.0));
+            let sum: f64 = rgb.iter().sum();
+            rgb.map(|v| v / sum)
+        };
+        let violet = locus_end(0.1741, 0.0050);
+        let red = locus_end(0.7347, 0.2653);
+        for nm in (0..=60).map(|i| LAMBDA_MIN + i as f64) {
+            let b = basis(nm);
+            assert!(
+                (0..3).all(|k| (b[k] - violet[k]).abs() < 0.01),
+                "{nm}: {b:?}"
+            );
+        }
+        for nm in (0..=180).map(|i| 650.0 + i as f64) {
+            assert_eq!(basis(nm), red, "{nm}");
+            let s = sensor(nm);
+            assert!(s.r > 0.0 && s.g < 0.0 && s.b < 0.0, "{nm}: {s:?}");
+        }
     }
 
     #[test]

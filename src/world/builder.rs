@@ -3,7 +3,7 @@
 use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
-use super::Primitive;
+use super::{Primitive, ShapeRules};
 use crate::geometry::{
     Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, Transform, Triangle,
 };
@@ -12,8 +12,8 @@ use crate::scene::model::{MeshData, Object};
 #[derive(Default)]
 pub(super) struct Builder {
     pub(super) primitives: Vec<Primitive>,
-    /// Planes are hit from the front only (the look's rule).
-    pub(super) one_sided_planes: bool,
+    /// The look's rules for planes and spheres.
+    pub(super) rules: ShapeRules,
     /// One geometry mesh per distinct `MeshData` allocation.
     meshes: HashMap<*const MeshData, Arc<Mesh>>,
     /// The mesh data that some instance shades `smooth`.
@@ -63,11 +63,14 @@ impl Builder {
                 radius,
                 motion,
                 ..
-            } => (*radius != 0.0 && radius.is_finite())
-                .then(|| Shape::Sphere(Sphere::new(*center, *radius, *motion))),
+            } => (*radius != 0.0 && radius.is_finite()).then(|| {
+                let mut sphere = Sphere::new(*center, *radius, *motion);
+                sphere.test = self.rules.sphere_test;
+                Shape::Sphere(sphere)
+            }),
             Object::Plane { normal, offset, .. } => {
                 Plane::new(*normal, *offset).map(|mut plane| {
-                    plane.one_sided = self.one_sided_planes;
+                    plane.one_sided = self.rules.one_sided_planes;
                     Shape::Plane(plane)
                 })
             }

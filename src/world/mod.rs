@@ -7,7 +7,7 @@ mod plain;
 mod primitive;
 
 use crate::accel::Bvh;
-use crate::geometry::{Intersection, Shape};
+use crate::geometry::{Intersection, Shape, SphereTest};
 use crate::math::{Aabb, Point3, Ray, Vec3, offset_origin};
 use crate::scene::model::Scene;
 
@@ -47,13 +47,20 @@ pub struct WorldHit {
     pub primitive: usize,
     /// Element within the primitive (triangle of a mesh), else 0.
     pub element: u32,
+    /// Whether rays leave from `point` itself rather than off the surface
+    /// (a sphere under Cambrian's test, [`SphereTest::Cambrian`]).
+    pub leaves_from_point: bool,
 }
 
 impl WorldHit {
     /// Origin for a ray leaving the hit in `direction` (either side of the surface):
     /// the point offset along the geometric normal by [`offset_origin`]. Rays
-    /// spawned from it do not re-hit this surface, even with `t_min = 0`.
+    /// spawned from it do not re-hit this surface, even with `t_min = 0`
+    /// (unless the hit `leaves_from_point`: then the point itself).
     pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
+        if self.leaves_from_point {
+            return self.point;
+        }
         offset_origin(&self.point, &self.geometric_normal, direction)
     }
 
@@ -61,6 +68,14 @@ impl WorldHit {
     pub fn spawn_ray(&self, direction: Vec3, time: f64) -> Ray {
         Ray::new(self.spawn_origin(&direction), direction, time)
     }
+}
+
+/// A look's conventions for how shapes meet rays (the exact ones by default).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ShapeRules {
+    /// Planes are hit from the front only, so light passes them from behind.
+    pub one_sided_planes: bool,
+    pub sphere_test: SphereTest,
 }
 
 /// Worlds with at most this many bounded primitives go without a BVH: their
@@ -98,14 +113,13 @@ impl World {
     /// Degenerate shapes (zero radius, zero normal, zero area, unusable profiles)
     /// are dropped.
     pub fn build(scene: &Scene) -> World {
-        World::build_with(scene, false)
+        World::build_with(scene, ShapeRules::default())
     }
 
-    /// [`World::build`] with planes that rays hit from the front only
-    /// (`one_sided_planes`, a look's convention).
-    pub fn build_with(scene: &Scene, one_sided_planes: bool) -> World {
+    /// [`World::build`] with a look's rules for how shapes meet rays.
+    pub fn build_with(scene: &Scene, rules: ShapeRules) -> World {
         let mut builder = Builder::for_tree(&scene.root);
-        builder.one_sided_planes = one_sided_planes;
+        builder.rules = rules;
         builder.visit(&scene.root, None);
         let mut world = World::from_primitives(builder.primitives);
         world.needs_uv = scene
@@ -204,6 +218,7 @@ impl World {
             material,
             primitive: index,
             element: hit.index,
+            leaves_from_point: primitive.leaves_from_point(),
         })
     }
 

@@ -4,14 +4,17 @@
 //! and a loop over a few of them costs less than the dispatch and box tests
 //! of the general path.
 
-use crate::geometry::{Intersection, Plane, Sphere};
+use crate::geometry::{Intersection, Plane, Sphere, SphereTest};
 use crate::math::Ray;
 
 /// Shapes with the indices of their primitives in the world.
 #[derive(Clone, Debug, Default)]
 pub struct PlainShapes {
     planes: Vec<(Plane, u32)>,
+    /// Spheres of the robust test, tested inline.
     spheres: Vec<(Sphere, u32)>,
+    /// Spheres of another test (a look's), by their own `intersect`.
+    other_spheres: Vec<(Sphere, u32)>,
 }
 
 impl PlainShapes {
@@ -20,7 +23,11 @@ impl PlainShapes {
     }
 
     pub fn push_sphere(&mut self, sphere: Sphere, primitive: usize) {
-        self.spheres.push((sphere, primitive as u32));
+        if sphere.test == SphereTest::Robust {
+            self.spheres.push((sphere, primitive as u32));
+        } else {
+            self.other_spheres.push((sphere, primitive as u32));
+        }
     }
 
     /// Lowers `limit` to the nearest hit in `(t_min, limit)` and records it
@@ -35,6 +42,12 @@ impl PlainShapes {
     ) {
         for (plane, index) in &self.planes {
             if let Some(hit) = plane.intersect(ray, t_min, *limit) {
+                *limit = hit.t;
+                *best = Some((*index as usize, hit));
+            }
+        }
+        for (sphere, index) in &self.other_spheres {
+            if let Some(hit) = sphere.intersect(ray, t_min, *limit) {
                 *limit = hit.t;
                 *best = Some((*index as usize, hit));
             }
@@ -63,6 +76,10 @@ impl PlainShapes {
                     .iter()
                     .any(|(sphere, _)| ray.sphere_distance(sphere, t_min, t_max).is_some())
             })
+            || self
+                .other_spheres
+                .iter()
+                .any(|(sphere, _)| sphere.intersect(ray, t_min, t_max).is_some())
     }
 }
 

@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use crate::geometry::{Intersection, Shape, SurfaceHit, Transform};
+use crate::geometry::{Intersection, Shape, SphereTest, SurfaceHit, Transform};
 use crate::math::{Aabb, Ray};
 use crate::scene::model::OWN_MATERIAL;
 
@@ -21,6 +21,13 @@ pub struct Primitive {
 }
 
 impl Primitive {
+    /// Whether rays leave this primitive's hits from the hit point itself
+    /// (see [`WorldHit::leaves_from_point`](super::WorldHit)).
+    #[inline]
+    pub fn leaves_from_point(&self) -> bool {
+        matches!(&self.shape, Shape::Sphere(sphere) if sphere.test != SphereTest::Robust)
+    }
+
     /// The material of element `element` (a mesh's triangle; 0 for other shapes).
     #[inline]
     pub fn material_of(&self, element: u32) -> usize {

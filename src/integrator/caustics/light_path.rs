@@ -126,6 +126,9 @@ pub fn trace(
             }
             return Some(y);
         };
+        if crosses_nonreciprocal(&at, &scattered.wi) {
+            return None;
+        }
         beta *= scattered.weight;
         if beta.is_black() {
             return None;
@@ -137,4 +140,13 @@ pub fn trace(
         }
         ray = Ray::new(at.spawn_origin(&direction), direction, time);
     }
+}
+
+/// Whether leaving `at` in `direction` crosses a surface whose transport is
+/// not the same both ways (a sphere under Cambrian's test, whose exit is
+/// taken for an entry): light subpaths do not go there, and camera paths
+/// count such paths alone (see `path`).
+#[inline]
+pub fn crosses_nonreciprocal(at: &Shading, direction: &Vec3) -> bool {
+    at.leaves_from_point && at.geometric.dot(direction) < 0.0
 }

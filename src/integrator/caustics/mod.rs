@@ -49,7 +49,7 @@ use crate::world::{World, WorldHit};
 use super::SceneView;
 
 pub use connect::{camera_edge, connect, edge_density};
-pub use light_path::{CausticVertex, trace};
+pub use light_path::{CausticVertex, crosses_nonreciprocal, trace};
 
 /// Whether light subpaths can add anything to a scene: it needs mirror or
 /// glass to go through and emitters small enough, as seen from the mirrors
