@@ -1,6 +1,7 @@
 //! Criterion benchmarks (release build, `make bench`): BVH build on the full
 //! Stanford dragon, incoherent rays through it, ray-sphere and
-//! revolution-surface intersections, and whole renders in samples per second.
+//! revolution-surface intersections, and whole renders in samples per second
+//! (smallpt and the three scenes of `scripts/curves.sh`).
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -112,8 +113,16 @@ fn renders(c: &mut Criterion) {
             "/testcases/smallpt.txt"
         )),
     )];
-    if let Some(path) = shared("scenes/report_scene11_dragons.txt") {
-        scenes.push(("dragons", path));
+    // The three scenes of scripts/curves.sh, in the same (original) look.
+    let curve_scenes = [
+        ("sample_rec", "reference/cambrian-pathtracer/testcases/sample_rec.txt"),
+        ("spheres", "scenes/report_scene15_spheres.txt"),
+        ("dragons", "scenes/report_scene11_dragons.txt"),
+    ];
+    for (name, relative) in curve_scenes {
+        if let Some(path) = shared(relative) {
+            scenes.push((name, path));
+        }
     }
     let mut group = c.benchmark_group("render_samples");
     group.sample_size(10);
