@@ -39,8 +39,8 @@ impl Bins {
 /// Maps centroids to bins along each axis (scale 0 for a flat axis, which
 /// puts everything in bin 0). Nodes of few items use as many bins as items.
 pub(super) struct Binning {
-    min: [f64; 3],
-    pub scale: [f64; 3],
+    min: [f32; 3],
+    pub scale: [f32; 3],
     pub bins: usize,
 }
 
@@ -50,7 +50,7 @@ impl Binning {
         let scale = [0, 1, 2].map(|axis| {
             let extent = centroids.max[axis] - centroids.min[axis];
             if extent > 0.0 && extent.is_finite() {
-                bins as f64 / extent
+                bins as f32 / extent
             } else {
                 0.0
             }
@@ -63,7 +63,7 @@ impl Binning {
     }
 
     #[inline]
-    pub fn bin(&self, axis: usize, c: f64) -> usize {
+    pub fn bin(&self, axis: usize, c: f32) -> usize {
         (((c - self.min[axis]) * self.scale[axis]) as usize).min(self.bins - 1)
     }
 

@@ -8,8 +8,13 @@
 //! range of the node array (a subtree over `n` items owns `2n - 1` slots:
 //! the node, then its first child's range, then its second's), so the tree is
 //! the same for any number of threads. Unused slots stay as gaps.
+//!
+//! Items and nodes hold f32 boxes rounded outward (28 and 32 bytes, were
+//! 56): the passes over the items are bound by memory, and the wide nodes
+//! keep f32 planes anyway.
 
 use super::binning::{BIN_COUNT, Binning, Bins};
+use super::wide::{round_down, round_up};
 use crate::math::Aabb;
 
 /// Cost of visiting an interior node, the unit of [`Leaves::group_cost`].
@@ -28,31 +33,28 @@ pub(super) struct BinaryNode {
     pub count: u32,
 }
 
-/// A box as the build handles it: plain arrays, so that unions compile to
-/// packed min/max (the inputs are finite).
+/// A box as the build handles it: the f64 box rounded outward to f32
+/// planes, which halves the memory that the passes over the items read
+/// and write (the build is bound by it; the wide nodes keep f32 planes
+/// anyway), in plain arrays so that unions compile to packed min/max.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Bounds {
-    pub min: [f64; 3],
-    pub max: [f64; 3],
+    pub min: [f32; 3],
+    pub max: [f32; 3],
 }
 
 impl Bounds {
     pub const EMPTY: Bounds = Bounds {
-        min: [f64::INFINITY; 3],
-        max: [f64::NEG_INFINITY; 3],
+        min: [f32::INFINITY; 3],
+        max: [f32::NEG_INFINITY; 3],
     };
 
+    /// The smallest f32 box that contains `b` (beyond the f32 range, an
+    /// infinite plane).
     pub fn from_aabb(b: &Aabb) -> Bounds {
         Bounds {
-            min: [b.min.x, b.min.y, b.min.z],
-            max: [b.max.x, b.max.y, b.max.z],
-        }
-    }
-
-    pub fn to_aabb(self) -> Aabb {
-        Aabb {
-            min: self.min.into(),
-            max: self.max.into(),
+            min: [b.min.x, b.min.y, b.min.z].map(round_down),
+            max: [b.max.x, b.max.y, b.max.z].map(round_up),
         }
     }
 
@@ -65,7 +67,7 @@ impl Bounds {
     }
 
     #[inline]
-    fn include(&self, p: &[f64; 3]) -> Bounds {
+    fn include(&self, p: &[f32; 3]) -> Bounds {
         Bounds {
             min: [0, 1, 2].map(|k| lesser(self.min[k], p[k])),
             max: [0, 1, 2].map(|k| greater(self.max[k], p[k])),
@@ -73,7 +75,7 @@ impl Bounds {
     }
 
     fn surface_area(&self) -> f64 {
-        let e = [0, 1, 2].map(|k| self.max[k] - self.min[k]);
+        let e = [0, 1, 2].map(|k| self.max[k] as f64 - self.min[k] as f64);
         if e.iter().any(|&e| e < 0.0) {
             return 0.0;
         }
@@ -82,12 +84,12 @@ impl Bounds {
 }
 
 #[inline]
-fn lesser(a: f64, b: f64) -> f64 {
+fn lesser(a: f32, b: f32) -> f32 {
     if a < b { a } else { b }
 }
 
 #[inline]
-fn greater(a: f64, b: f64) -> f64 {
+fn greater(a: f32, b: f32) -> f32 {
     if a > b { a } else { b }
 }
 
@@ -125,8 +127,9 @@ pub(super) struct Item {
 
 impl Item {
     #[inline]
-    pub(super) fn centroid(&self) -> [f64; 3] {
-        [0, 1, 2].map(|k| (self.bounds.min[k] + self.bounds.max[k]) * 0.5)
+    pub(super) fn centroid(&self) -> [f32; 3] {
+        // Halves first: no overflow near the ends of the f32 range.
+        [0, 1, 2].map(|k| self.bounds.min[k] * 0.5 + self.bounds.max[k] * 0.5)
     }
 }
 

@@ -68,6 +68,11 @@ fn collapsed(boxes: &[Aabb], leaves: Leaves) -> Collapsed {
         leaves,
         max_depth: MAX_DEPTH,
     };
+    // The exact (f64) bounds, for `may_hit`: the tree's are rounded to f32.
+    let exact = boxes
+        .iter()
+        .filter(|b| b.is_valid())
+        .fold(Aabb::empty(), |acc, b| acc.union(b));
     let built = build::build(items, settings);
     if built.nodes.is_empty() {
         return Collapsed {
@@ -82,7 +87,7 @@ fn collapsed(boxes: &[Aabb], leaves: Leaves) -> Collapsed {
         nodes,
         indices: built.items.iter().map(|item| item.index).collect(),
         depth,
-        bounds: Some(built.nodes[0].bounds.to_aabb()),
+        bounds: Some(exact),
     }
 }
 

@@ -175,7 +175,7 @@ enum Child {
 }
 
 fn area(b: &Bounds) -> f64 {
-    let e = [0, 1, 2].map(|k| b.max[k] - b.min[k]);
+    let e = [0, 1, 2].map(|k| b.max[k] as f64 - b.min[k] as f64);
     e[0] * e[1] + e[1] * e[2] + e[2] * e[0]
 }
 
@@ -295,14 +295,13 @@ fn set_target(node: &mut Node, i: usize, target: u32, count: u32) {
     node.count[i] = count as u8;
 }
 
-/// A node with the given child boxes (at most `W`) on its grid; targets
+/// A node with the given child boxes (at most `W`, f32 planes that contain
+/// the primitives' f64 boxes) on its grid; targets
 /// are set by the caller.
 fn quantise(boxes: &[Bounds]) -> Node {
     let mut node = Node::EMPTY;
-    let low: [[f32; 3]; W] =
-        std::array::from_fn(|i| boxes.get(i).map_or([0.0; 3], |b| b.min.map(round_down)));
-    let high: [[f32; 3]; W] =
-        std::array::from_fn(|i| boxes.get(i).map_or([0.0; 3], |b| b.max.map(round_up)));
+    let low: [[f32; 3]; W] = std::array::from_fn(|i| boxes.get(i).map_or([0.0; 3], |b| b.min));
+    let high: [[f32; 3]; W] = std::array::from_fn(|i| boxes.get(i).map_or([0.0; 3], |b| b.max));
     for k in 0..3 {
         let lowest = (0..boxes.len())
             .map(|i| low[i][k])
