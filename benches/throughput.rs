@@ -115,7 +115,10 @@ fn renders(c: &mut Criterion) {
     )];
     // The three scenes of scripts/curves.sh, in the same (original) look.
     let curve_scenes = [
-        ("sample_rec", "reference/cambrian-pathtracer/testcases/sample_rec.txt"),
+        (
+            "sample_rec",
+            "reference/cambrian-pathtracer/testcases/sample_rec.txt",
+        ),
         ("spheres", "scenes/report_scene15_spheres.txt"),
         ("dragons", "scenes/report_scene11_dragons.txt"),
     ];
