@@ -52,6 +52,39 @@ impl<T: Pod> HugeArray<T> {
         }
     }
 
+    /// [`HugeArray::from_fn`] with the values computed in parallel (rayon),
+    /// each written to its own place, so the array is the same for any
+    /// number of threads.
+    pub fn from_fn_parallel(len: usize, value: impl Fn(usize) -> T + Sync) -> HugeArray<T>
+    where
+        T: Send,
+    {
+        use rayon::prelude::*;
+        const CHUNK: usize = 4096;
+        let fill = |values: &mut [T]| {
+            values
+                .par_chunks_mut(CHUNK)
+                .enumerate()
+                .for_each(|(c, chunk)| {
+                    for (i, v) in chunk.iter_mut().enumerate() {
+                        *v = value(c * CHUNK + i);
+                    }
+                });
+        };
+        #[cfg(target_os = "linux")]
+        if let Some(mut map) = Self::map(len) {
+            fill(bytemuck::cast_slice_mut(&mut map[..]));
+            return HugeArray {
+                storage: Storage::Mapped { map, len },
+            };
+        }
+        let mut values = vec![T::zeroed(); len];
+        fill(&mut values);
+        HugeArray {
+            storage: Storage::Heap(values),
+        }
+    }
+
     /// An anonymous mapping for `len` values, advised for huge pages, when
     /// they are large enough to fill one.
     #[cfg(target_os = "linux")]
@@ -128,6 +161,21 @@ mod tests {
             assert_eq!(
                 array.is_mapped(),
                 cfg!(target_os = "linux") && len == 1 << 20
+            );
+        }
+    }
+
+    #[test]
+    fn parallel_fill_puts_every_value_in_its_place() {
+        // Lengths that are not multiples of the chunk, on the heap and mapped.
+        for len in [0usize, 5, 4097, (1 << 20) + 3] {
+            let value = |i: usize| (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+            let array = HugeArray::from_fn_parallel(len, value);
+            let expected: Vec<u64> = (0..len).map(value).collect();
+            assert_eq!(array.as_slice(), &expected[..]);
+            assert_eq!(
+                array.is_mapped(),
+                cfg!(target_os = "linux") && len > 1 << 20
             );
         }
     }

@@ -6,6 +6,7 @@
 //! box always contains its f64 box and no hit is lost.
 
 use bytemuck::{Pod, Zeroable};
+use rayon::slice::ParallelSliceMut;
 
 use super::build::{BinaryNode, Bounds};
 
@@ -348,7 +349,7 @@ pub(super) fn pad_leaves(nodes: &mut [Node], indices: &[u32], width: usize) -> V
             }
         }
     }
-    leaves.sort_unstable();
+    leaves.par_sort_unstable();
     let mut slots = Vec::with_capacity(indices.len() + indices.len() / 2);
     for (first, n, i) in leaves {
         let count = nodes[n].count[i] as usize;

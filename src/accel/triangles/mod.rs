@@ -57,13 +57,27 @@ pub struct LeafTriangles {
 impl LeafTriangles {
     /// Builds the BVH over the `count` triangles `triangle(i)`; `None`
     /// (an invalid triangle) is left out and never reported.
-    pub fn build(count: usize, triangle: impl Fn(usize) -> Option<[Point3; 3]>) -> LeafTriangles {
-        let boxes: Vec<Aabb> = (0..count)
+    pub fn build(
+        count: usize,
+        triangle: impl Fn(usize) -> Option<[Point3; 3]> + Sync,
+    ) -> LeafTriangles {
+        use rayon::prelude::*;
+        // Each triangle's box, and whether its coordinates are all f32
+        // values (only triangles with a valid box go into the tree).
+        let (boxes, f32_coords): (Vec<Aabb>, Vec<bool>) = (0..count)
+            .into_par_iter()
             .map(|i| match triangle(i) {
-                Some(t) => t.iter().fold(Aabb::empty(), |b, p| b.include_point(*p)),
-                None => Aabb::empty(),
+                Some(t) => (
+                    t.iter().fold(Aabb::empty(), |b, p| b.include_point(*p)),
+                    t.iter().all(|p| p.iter().all(|&c| c as f32 as f64 == c)),
+                ),
+                None => (Aabb::empty(), true),
             })
-            .collect();
+            .unzip();
+        let single = boxes
+            .par_iter()
+            .zip(&f32_coords)
+            .all(|(b, &f32_coords)| f32_coords || !b.is_valid());
         let (bvh, slots) = Bvh::build_in_leaf_order(&boxes, LANES, BLOCK_COST);
         // Only valid triangles have a valid box, so only they are in the
         // tree.
@@ -76,13 +90,9 @@ impl LeafTriangles {
                 Some((index, vertices))
             })
         };
-        let single = slots.iter().filter(|&&i| i != u32::MAX).all(|&index| {
-            triangle(index as usize)
-                .is_none_or(|t| t.iter().all(|p| p.iter().all(|&c| c as f32 as f64 == c)))
-        });
         let count = slots.len() / LANES;
         let blocks = if single {
-            Blocks::Single(HugeArray::from_fn(count, |b| {
+            Blocks::Single(HugeArray::from_fn_parallel(count, |b| {
                 let lanes = lanes(b);
                 Block32 {
                     coords: rows(&lanes, |c| c as f32),
@@ -90,7 +100,7 @@ impl LeafTriangles {
                 }
             }))
         } else {
-            Blocks::Double(HugeArray::from_fn(count, |b| {
+            Blocks::Double(HugeArray::from_fn_parallel(count, |b| {
                 let lanes = lanes(b);
                 Block64 {
                     coords: rows(&lanes, |c| c),
