@@ -26,6 +26,15 @@ fn nearest(bvh: &Bvh, boxes: &[Aabb], ray: &Ray) -> Option<f64> {
     t.is_finite().then_some(t)
 }
 
+/// The nearest box hit by testing every box.
+fn brute_nearest(boxes: &[Aabb], ray: &Ray) -> Option<f64> {
+    let inverse = inverse_direction(&ray.direction);
+    boxes
+        .iter()
+        .filter_map(|b| b.hit_distance(&ray.origin, &inverse, 0.0, f64::INFINITY))
+        .fold(None, |m: Option<f64>, t| Some(m.map_or(t, |m| m.min(t))))
+}
+
 #[test]
 fn traversal_equals_brute_force_on_random_boxes() {
     let mut rng = Rng::new(1, 2);
@@ -45,10 +54,7 @@ fn traversal_equals_brute_force_on_random_boxes() {
             }
             let ray = Ray::new(origin, direction, 0.0);
             let inverse = inverse_direction(&direction);
-            let brute = boxes
-                .iter()
-                .filter_map(|b| b.hit_distance(&origin, &inverse, 0.0, f64::INFINITY))
-                .fold(None, |m: Option<f64>, t| Some(m.map_or(t, |m| m.min(t))));
+            let brute = brute_nearest(&boxes, &ray);
             assert_eq!(nearest(&bvh, &boxes, &ray), brute);
             let any = bvh.any(&ray, 0.0, f64::INFINITY, |i| {
                 boxes[i]
@@ -326,11 +332,7 @@ fn traversal_equals_brute_force_at_extreme_scales() {
             let direction =
                 Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) - Vec3::repeat(0.5);
             let ray = Ray::new(origin, direction, 0.0);
-            let inverse = inverse_direction(&direction);
-            let brute = boxes
-                .iter()
-                .filter_map(|b| b.hit_distance(&origin, &inverse, 0.0, f64::INFINITY))
-                .fold(None, |m: Option<f64>, t| Some(m.map_or(t, |m| m.min(t))));
+            let brute = brute_nearest(&boxes, &ray);
             assert_eq!(nearest(&bvh, &boxes, &ray), brute, "{scale}");
         }
     }
