@@ -12,6 +12,17 @@ use pathtracer::sampler::Sampler;
 use pathtracer::scene::model::{Material, Object, Scene};
 use pathtracer::world::World;
 
+/// The path integrator's radiance along `ray`, from a default camera sample.
+fn path_radiance(view: &SceneView, ray: Ray, sampler: &mut Sampler) -> Color {
+    Integrator::Path.radiance(
+        view,
+        ray,
+        &CameraSample::default(),
+        sampler,
+        &mut Splats::default(),
+    )
+}
+
 fn sphere(center: Vec3, radius: f64, material: usize) -> Object {
     Object::Sphere {
         center,
@@ -51,13 +62,7 @@ fn mean_radiance(scene: &Scene, origin: Vec3, aimed: bool, paths: u64) -> [(f64,
             d = (d * rng.next_f64().cbrt() - origin).normalize();
         }
         let mut sampler = Sampler::Independent(rng);
-        let l = Integrator::Path.radiance(
-            &view,
-            Ray::new(origin, d, 0.0),
-            &CameraSample::default(),
-            &mut sampler,
-            &mut Splats::default(),
-        );
+        let l = path_radiance(&view, Ray::new(origin, d, 0.0), &mut sampler);
         for (k, v) in [l.r, l.g, l.b].into_iter().enumerate() {
             sums[k] += v;
             squares[k] += v * v;
@@ -148,13 +153,7 @@ fn a_grey_scattering_ball_in_a_white_furnace_returns_the_background_exactly() {
                 Vec3::new(rng.next_f64(), rng.next_f64(), 0.0) * 1.4 - Vec3::new(0.7, 0.7, 0.0);
             let ray = Ray::new(origin, (target - origin).normalize(), 0.0);
             let mut sampler = Sampler::Independent(rng);
-            let l = Integrator::Path.radiance(
-                &view,
-                ray,
-                &CameraSample::default(),
-                &mut sampler,
-                &mut Splats::default(),
-            );
+            let l = path_radiance(&view, ray, &mut sampler);
             for v in [l.r, l.g, l.b] {
                 assert!((v - 1.0).abs() < 1e-12, "sample {i}: {l:?}");
             }
@@ -220,13 +219,7 @@ fn an_emitter_through_a_pure_absorber_is_attenuated_by_exp_minus_sigma_t_d() {
     for h in [0.0, 0.5, 0.9] {
         let ray = Ray::new(Vec3::new(0.0, h, 5.0), Vec3::new(0.0, 0.0, -1.0), 0.0);
         let mut sampler = Sampler::Independent(Rng::for_sample(0, 0, 1));
-        let l = Integrator::Path.radiance(
-            &view,
-            ray,
-            &CameraSample::default(),
-            &mut sampler,
-            &mut Splats::default(),
-        );
+        let l = path_radiance(&view, ray, &mut sampler);
         let d = 2.0 * (1.0 - h * h).sqrt();
         let want = [0.25, 0.5, 1.0].map(|sigma: f64| 2.0 * (-sigma * d).exp());
         for (got, want) in [l.r, l.g, l.b].into_iter().zip(want) {
@@ -335,13 +328,7 @@ fn a_directional_light_through_an_absorbing_ball_is_attenuated_twice() {
     assert!(!view.direct_lights.is_empty());
     let ray = Ray::new(Vec3::new(0.0, 5.0, 0.0), Vec3::new(0.0, -1.0, 0.0), 0.0);
     let mut sampler = Sampler::Independent(Rng::for_sample(0, 0, 2));
-    let l = Integrator::Path.radiance(
-        &view,
-        ray,
-        &CameraSample::default(),
-        &mut sampler,
-        &mut Splats::default(),
-    );
+    let l = path_radiance(&view, ray, &mut sampler);
     let want = [0.25, 0.5, 1.0].map(|sigma: f64| 0.5 * (-4.0 * sigma).exp());
     for (got, want) in [l.r, l.g, l.b].into_iter().zip(want) {
         assert!((got - want).abs() < 1e-9, "{got} vs {want}");
