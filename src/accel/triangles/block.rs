@@ -28,14 +28,22 @@ pub(super) struct Block64 {
     pub original: [u32; LANES],
 }
 
-/// What the queries read of a block.
-pub(super) trait Block: Pod {
+/// How a block is made from its lanes, and what the queries read of it.
+pub(super) trait Block: Pod + Send {
+    /// The block of `lanes` (unused lanes zero, index `u32::MAX`).
+    fn from_lanes(lanes: &Lanes) -> Self;
     /// The vertex rows in f64.
     fn coords(&self) -> [[f64; LANES]; 9];
     fn original(&self) -> &[u32; LANES];
 }
 
 impl Block for Block32 {
+    fn from_lanes(lanes: &Lanes) -> Self {
+        Block32 {
+            coords: rows(lanes, |c| c as f32),
+            original: originals(lanes),
+        }
+    }
     #[inline(always)]
     fn coords(&self) -> [[f64; LANES]; 9] {
         self.coords.map(|row| row.map(f64::from))
@@ -47,6 +55,12 @@ impl Block for Block32 {
 }
 
 impl Block for Block64 {
+    fn from_lanes(lanes: &Lanes) -> Self {
+        Block64 {
+            coords: rows(lanes, |c| c),
+            original: originals(lanes),
+        }
+    }
     #[inline(always)]
     fn coords(&self) -> [[f64; LANES]; 9] {
         self.coords
@@ -62,10 +76,7 @@ impl Block for Block64 {
 pub(super) type Lanes = [Option<(u32, [Point3; 3])>; LANES];
 
 /// Rows of `lanes`, zero in unused lanes, in the precision `convert` gives.
-pub(super) fn rows<C: Copy + Default>(
-    lanes: &Lanes,
-    convert: impl Fn(f64) -> C,
-) -> [[C; LANES]; 9] {
+fn rows<C: Copy + Default>(lanes: &Lanes, convert: impl Fn(f64) -> C) -> [[C; LANES]; 9] {
     let mut rows = [[C::default(); LANES]; 9];
     for (lane, entry) in lanes.iter().enumerate() {
         if let Some((_, vertices)) = entry {
@@ -80,7 +91,7 @@ pub(super) fn rows<C: Copy + Default>(
 }
 
 /// The caller's index of each lane, `u32::MAX` for unused ones.
-pub(super) fn originals(lanes: &Lanes) -> [u32; LANES] {
+fn originals(lanes: &Lanes) -> [u32; LANES] {
     lanes.map(|entry| entry.map_or(u32::MAX, |(index, _)| index))
 }
 

@@ -17,7 +17,7 @@ mod block;
 use super::Bvh;
 use super::huge_pages::HugeArray;
 use crate::math::{Aabb, Point3, Ray};
-use block::{Block, Block32, Block64, LANES, Lanes, originals, rows, test};
+use block::{Block, Block32, Block64, LANES, Lanes, test};
 
 /// SAH cost of testing one block, in node visits.
 const BLOCK_COST: f64 = 1.0;
@@ -93,19 +93,11 @@ impl LeafTriangles {
         let count = slots.len() / LANES;
         let blocks = if single {
             Blocks::Single(HugeArray::from_fn_parallel(count, |b| {
-                let lanes = lanes(b);
-                Block32 {
-                    coords: rows(&lanes, |c| c as f32),
-                    original: originals(&lanes),
-                }
+                Block::from_lanes(&lanes(b))
             }))
         } else {
             Blocks::Double(HugeArray::from_fn_parallel(count, |b| {
-                let lanes = lanes(b);
-                Block64 {
-                    coords: rows(&lanes, |c| c),
-                    original: originals(&lanes),
-                }
+                Block::from_lanes(&lanes(b))
             }))
         };
         LeafTriangles {
