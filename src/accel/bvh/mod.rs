@@ -17,7 +17,7 @@ mod traverse;
 mod wide;
 
 use super::huge_pages::HugeArray;
-use crate::math::{Aabb, Ray, inverse_direction};
+use crate::math::{Aabb, Ray, Vec3};
 use build::{Bounds, Item, Leaves, Settings};
 use wide::Node;
 
@@ -159,16 +159,11 @@ impl Bvh {
     /// of a scene miss most meshes, and this test is cheaper than preparing
     /// the f32 ray and its stack.
     #[inline]
-    fn may_hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+    fn may_hit(&self, ray: &Ray, inverse: &Vec3, t_min: f64, t_max: f64) -> bool {
         let Some(b) = &self.bounds else {
             return false;
         };
-        let (near, far) = b.slabs(
-            &ray.origin,
-            &inverse_direction(&ray.direction),
-            t_min,
-            t_max,
-        );
+        let (near, far) = b.slabs(&ray.origin, inverse, t_min, t_max);
         // Grown by a few ulps for the rounding of the slab distances, so
         // that a hit on a face or corner of the bounds is never lost.
         near <= far + far.abs() * (4.0 * f64::EPSILON)

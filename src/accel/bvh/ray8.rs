@@ -12,8 +12,8 @@
 //! plane of an axis the ray is parallel to) keeps the previous bound.
 
 use super::wide::{Node, W, round_down};
-use crate::math::Ray;
-use wide::{f32x8, f64x4, i16x8, i32x8, u8x16};
+use crate::math::{Ray, Vec3};
+use wide::{f32x8, i16x8, i32x8, u8x16};
 
 /// Relative growth of exit distances, 16 f32 units of roundoff.
 const SLACK: f32 = 1.0 / (1u32 << 20) as f32;
@@ -50,9 +50,8 @@ pub(super) struct Ray8 {
 
 impl Ray8 {
     #[inline]
-    pub fn new(ray: &Ray, t_min: f64) -> Ray8 {
-        let d = ray.direction;
-        let inverse = (f64x4::splat(1.0) / f64x4::new([d.x, d.y, d.z, 1.0])).to_array();
+    /// The ray with `inverse` its direction's inverse (`1 / d` per axis).
+    pub fn new(ray: &Ray, inverse: &Vec3, t_min: f64) -> Ray8 {
         let mut r = Ray8 {
             negative: [false; 3],
             origin_near: [0.0; 3],
@@ -60,7 +59,7 @@ impl Ray8 {
             inverse: [0.0; 3],
             t_min: round_down(t_min),
         };
-        for (k, &inverse) in inverse[..3].iter().enumerate() {
+        for (k, &inverse) in inverse.iter().enumerate() {
             let (low, high) = bracket(ray.origin[k]);
             r.inverse[k] = inverse as f32;
             r.negative[k] = inverse < 0.0;

@@ -8,7 +8,7 @@
 use super::ray8::{Entry, Ray8};
 use super::wide::{self, Node, W as WIDTH};
 use super::{Bvh, MAX_DEPTH};
-use crate::math::Ray;
+use crate::math::{Ray, inverse_direction};
 
 /// Traversal stack sizes: a node pushes at most `WIDTH - 1` entries more
 /// than it pops, so a tree of wide depth `d` needs at most
@@ -33,15 +33,17 @@ impl Bvh {
     where
         F: FnMut(usize, usize, f64) -> Option<f64>,
     {
-        if !self.may_hit(ray, t_min, t_max) {
+        let inverse = inverse_direction(&ray.direction);
+        if !self.may_hit(ray, &inverse, t_min, t_max) {
             return t_max;
         }
+        let r = Ray8::new(ray, &inverse, t_min);
         if Self::stack_needed(self.depth) <= SMALL_STACK {
-            self.nearest::<SMALL_STACK, F>(ray, t_min, t_max, leaf)
+            self.nearest::<SMALL_STACK, F>(&r, t_max, leaf)
         } else if Self::stack_needed(self.depth) <= MEDIUM_STACK {
-            self.nearest::<MEDIUM_STACK, F>(ray, t_min, t_max, leaf)
+            self.nearest::<MEDIUM_STACK, F>(&r, t_max, leaf)
         } else {
-            self.nearest::<STACK_SIZE, F>(ray, t_min, t_max, leaf)
+            self.nearest::<STACK_SIZE, F>(&r, t_max, leaf)
         }
     }
 
@@ -52,25 +54,26 @@ impl Bvh {
     where
         F: FnMut(usize, usize) -> bool,
     {
-        if !self.may_hit(ray, t_min, t_max) {
+        let inverse = inverse_direction(&ray.direction);
+        if !self.may_hit(ray, &inverse, t_min, t_max) {
             return false;
         }
+        let r = Ray8::new(ray, &inverse, t_min);
         if Self::stack_needed(self.depth) <= SMALL_STACK {
-            self.first::<SMALL_STACK, F>(ray, t_min, t_max, leaf)
+            self.first::<SMALL_STACK, F>(&r, t_max, leaf)
         } else if Self::stack_needed(self.depth) <= MEDIUM_STACK {
-            self.first::<MEDIUM_STACK, F>(ray, t_min, t_max, leaf)
+            self.first::<MEDIUM_STACK, F>(&r, t_max, leaf)
         } else {
-            self.first::<STACK_SIZE, F>(ray, t_min, t_max, leaf)
+            self.first::<STACK_SIZE, F>(&r, t_max, leaf)
         }
     }
 
     /// [`Bvh::traverse_leaves`] with a stack of `N` entries.
     #[inline]
-    fn nearest<const N: usize, F>(&self, ray: &Ray, t_min: f64, mut t_max: f64, mut leaf: F) -> f64
+    fn nearest<const N: usize, F>(&self, r: &Ray8, mut t_max: f64, mut leaf: F) -> f64
     where
         F: FnMut(usize, usize, f64) -> Option<f64>,
     {
-        let r = Ray8::new(ray, t_min);
         let nodes: &[Node] = &self.nodes;
         let mut limit = wide::round_up(t_max);
         let mut stack = [Entry::default(); N];
@@ -106,11 +109,10 @@ impl Bvh {
 
     /// [`Bvh::any_leaves`] with a stack of `N` entries.
     #[inline]
-    fn first<const N: usize, F>(&self, ray: &Ray, t_min: f64, t_max: f64, mut leaf: F) -> bool
+    fn first<const N: usize, F>(&self, r: &Ray8, t_max: f64, mut leaf: F) -> bool
     where
         F: FnMut(usize, usize) -> bool,
     {
-        let r = Ray8::new(ray, t_min);
         let nodes: &[Node] = &self.nodes;
         let limit = wide::round_up(t_max);
         let mut stack = [Entry::default(); N];
