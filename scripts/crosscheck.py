@@ -902,6 +902,27 @@ def preview(mi, path, image):
 
 # ----------------------------------------------------------------------------
 
+
+def check_tolerance(report, mean_ratios, tolerance):
+    """Records in `report` and prints whether every mean ratio is within
+    `tolerance` of 1; returns whether it is."""
+    off = max(abs(r - 1.0) for r in mean_ratios)
+    report["within_tolerance"] = off <= tolerance
+    if off > tolerance:
+        print(f"MISMATCH: mean ratio off by {off:.4f} > tolerance {tolerance}")
+    else:
+        print(f"agreement: mean ratio within {off:.4f} of 1 (tolerance {tolerance})")
+    return off <= tolerance
+
+
+def write_report(out, report):
+    """Writes `report` to OUT/crosscheck.json."""
+    path = os.path.join(out, "crosscheck.json")
+    with open(path, "w") as f:
+        json.dump(report, f, indent=2)
+    print(f"wrote {path}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--scene", default="testcases/crosscheck.txt")
@@ -1031,20 +1052,13 @@ def main():
         report["ours_over_mitsuba_seconds"] = o["seconds"] / m["seconds"]
         print(f"\nrelMSE ours / Mitsuba at {args.spp} spp: {report['ours_over_mitsuba_rel_mse']:.2f}"
               f"; time ours / Mitsuba: {report['ours_over_mitsuba_seconds']:.3f}")
-        off = max(abs(r - 1.0) for r in o["mean_ratio_rgb"])
-        report["within_tolerance"] = off <= args.tolerance
-        if off > args.tolerance:
-            print(f"MISMATCH: mean ratio off by {off:.4f} > tolerance {args.tolerance}")
+        if not check_tolerance(report, o["mean_ratio_rgb"], args.tolerance):
             status = status or 1
-        else:
-            print(f"agreement: mean ratio within {off:.4f} of 1 (tolerance {args.tolerance})")
     if not args.match_filter:
         print("note: pixel filters differ (Mitsuba box, ours 2x2 tent): edges differ slightly "
               "(--match-filter matches them)")
     print("note: both sample lights (ours with --integrator path, the default)")
-    with open(os.path.join(args.out, "crosscheck.json"), "w") as f:
-        json.dump(report, f, indent=2)
-    print(f"wrote {os.path.join(args.out, 'crosscheck.json')}")
+    write_report(args.out, report)
     return status
 
 
