@@ -25,7 +25,7 @@ use crate::world::World;
 pub struct RenderSettings {
     pub width: u32,
     pub height: u32,
-    /// Samples per pixel in total, spread over the 2x2 sub-pixels in turn.
+    /// Samples per pixel in total, spread over the 2x2 sub-pixels.
     pub spp: u32,
     pub seed: u64,
     /// Worker threads; `None`: one per core.
@@ -44,8 +44,9 @@ pub struct RenderSettings {
     pub progress_every: Option<f64>,
     /// Scale samples down to this luminance (biased; `None`: off).
     pub clamp: Option<f64>,
-    /// Whether the path integrator traces light subpaths for caustics where
-    /// the scene has any (light tracing and connections).
+    /// Whether the path integrator uses its strategies for caustics where
+    /// the scene has any: light subpaths (light tracing and connections)
+    /// and split bounces (see [`crate::integrator::split`]).
     pub light_paths: bool,
     /// The conventions of the rendering.
     pub look: Look,
@@ -346,8 +347,8 @@ impl<'a> Renderer<'a> {
         })
     }
 
-    /// One camera sample: sub-pixel `sample mod 4` of the 2x2 grid with the
-    /// tent filter, lens and time only where the scene needs them.
+    /// One camera sample: a position under the 2x2 sub-pixels' tent filter
+    /// (see `subpixel`), lens and time only where the scene needs them.
     fn trace_sample(&self, at: PixelSample, splats: &mut Splats) -> crate::color::Color {
         let settings = self.settings;
         let mut sampler = Sampler::new(
@@ -357,7 +358,7 @@ impl<'a> Renderer<'a> {
             settings.seed,
         );
         let (film_x, film_y) = match settings.look.pixels {
-            PixelSampling::Tent => film_position(at.x, at.y, at.sample % 4, sampler.next_2d()),
+            PixelSampling::Tent => film_position(at.x, at.y, sampler.next_2d()),
             PixelSampling::Centre => (at.x as f64 + 0.5, at.y as f64 + 0.5),
         };
         let lens = if self.plan.lens {

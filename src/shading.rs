@@ -5,10 +5,10 @@
 
 use crate::bsdf::{Bsdf, LobeSet, Rules};
 use crate::color::Color;
-use crate::math::{Point3, Ray, Vec3, offset_origin};
+use crate::math::{Point3, Ray, Vec3};
 use crate::scene::model::{Material, Scene};
 use crate::surface_maps;
-use crate::world::WorldHit;
+use crate::world::{self, WorldHit};
 
 /// A hit seen from the ray that found it.
 pub struct Shading<'a> {
@@ -75,16 +75,16 @@ impl<'a> Shading<'a> {
         Bsdf::new(set, self.color, &self.normal, self.entering, cos_o, rules)
     }
 
-    /// The origin of a ray leaving this point in `direction`: pushed off the
-    /// surface along the geometric normal, to the side the ray goes to (see
-    /// [`offset_origin`]), so that it cannot re-hit the surface; or the
-    /// point itself where the hit [`leaves_from_point`](Self::leaves_from_point).
+    /// The origin of a ray leaving this point in `direction`, as for the hit
+    /// it was made from ([`world::spawn_origin`]).
     #[inline]
     pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
-        if self.leaves_from_point {
-            return self.point;
-        }
-        offset_origin(&self.point, &self.geometric, direction)
+        world::spawn_origin(
+            &self.point,
+            &self.geometric,
+            self.leaves_from_point,
+            direction,
+        )
     }
 }
 

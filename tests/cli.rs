@@ -19,24 +19,32 @@ fn temp_dir(name: &str) -> PathBuf {
     dir
 }
 
-fn render_smallpt(out: &Path, threads: &str, seed: &str) -> Output {
-    pathtracer(&[
+/// Renders smallpt's box at `size` and `spp` into `out`; `extra` adds options.
+fn render_smallpt_with(out: &Path, size: (u32, u32), spp: u32, extra: &[&str]) -> Output {
+    let (width, height, spp) = (size.0.to_string(), size.1.to_string(), spp.to_string());
+    let mut args = vec![
         "render",
         "testcases/smallpt.txt",
         "-o",
         out.to_str().unwrap(),
         "--width",
-        "40",
+        &width,
         "--height",
-        "30",
+        &height,
         "--spp",
-        "8",
-        "--threads",
-        threads,
-        "--seed",
-        seed,
-        "--quiet",
-    ])
+        &spp,
+    ];
+    args.extend_from_slice(extra);
+    pathtracer(&args)
+}
+
+fn render_smallpt(out: &Path, threads: &str, seed: &str) -> Output {
+    render_smallpt_with(
+        out,
+        (40, 30),
+        8,
+        &["--threads", threads, "--seed", seed, "--quiet"],
+    )
 }
 
 #[test]
@@ -162,21 +170,7 @@ fn exposure_and_tonemap_change_8_bit_outputs_only_and_default_to_the_plain_write
     let dir = temp_dir("tonemap");
     let render = |name: &str, extra: &[&str]| {
         let path = dir.join(name);
-        let mut args = vec![
-            "render",
-            "testcases/smallpt.txt",
-            "-o",
-            path.to_str().unwrap(),
-            "--width",
-            "24",
-            "--height",
-            "18",
-            "--spp",
-            "4",
-            "--quiet",
-        ];
-        args.extend_from_slice(extra);
-        let out = pathtracer(&args);
+        let out = render_smallpt_with(&path, (24, 18), 4, &[&["--quiet"], extra].concat());
         assert!(
             out.status.success(),
             "{}",
@@ -315,4 +309,25 @@ fn every_project_testcase_renders_without_nan() {
         count += 1;
     }
     assert!(count >= 3, "{count} testcases");
+}
+
+#[test]
+fn stats_say_whether_bounces_are_split() {
+    // smallpt's box has a mirror and a glass ball under a small light.
+    let dir = temp_dir("split-stats");
+    let out = dir.join("x.pfm");
+    let stats = |extra: &[&str]| {
+        let output = render_smallpt_with(&out, (16, 12), 1, &[&["--stats"], extra].concat());
+        assert!(output.status.success(), "{output:?}");
+        let text = String::from_utf8_lossy(&output.stderr).into_owned()
+            + &String::from_utf8_lossy(&output.stdout);
+        text.lines()
+            .find(|line| line.starts_with("split bounces"))
+            .unwrap_or_else(|| panic!("no split line in {text}"))
+            .to_string()
+    };
+    assert!(stats(&[]).contains("on (8 bounces"), "{}", stats(&[]));
+    assert!(stats(&["--no-light-paths"]).contains("off (--no-light-paths)"));
+    assert!(stats(&["--integrator", "original"]).contains("off (path integrator"));
+    let _ = std::fs::remove_dir_all(&dir);
 }

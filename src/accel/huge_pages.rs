@@ -30,32 +30,18 @@ enum Storage<T> {
 
 impl<T: Pod> HugeArray<T> {
     /// The values of `values`, in huge pages when they are large enough.
-    pub fn from_slice(values: &[T]) -> HugeArray<T> {
+    pub fn from_slice(values: &[T]) -> HugeArray<T>
+    where
+        T: Send + Sync,
+    {
         HugeArray::from_fn(values.len(), |i| values[i])
     }
 
-    /// `value(i)` for each `i < len`, written in place (no copy of a
-    /// large array through the heap).
-    pub fn from_fn(len: usize, mut value: impl FnMut(usize) -> T) -> HugeArray<T> {
-        #[cfg(target_os = "linux")]
-        if let Some(mut map) = Self::map(len) {
-            let values: &mut [T] = bytemuck::cast_slice_mut(&mut map[..]);
-            for (i, v) in values.iter_mut().enumerate() {
-                *v = value(i);
-            }
-            return HugeArray {
-                storage: Storage::Mapped { map, len },
-            };
-        }
-        HugeArray {
-            storage: Storage::Heap((0..len).map(value).collect()),
-        }
-    }
-
-    /// [`HugeArray::from_fn`] with the values computed in parallel (rayon),
-    /// each written to its own place, so the array is the same for any
-    /// number of threads.
-    pub fn from_fn_parallel(len: usize, value: impl Fn(usize) -> T + Sync) -> HugeArray<T>
+    /// `value(i)` for each `i < len`, computed in parallel (rayon) and
+    /// written in place (no copy of a large array through the heap), each
+    /// to its own place, so the array is the same for any number of
+    /// threads.
+    pub fn from_fn(len: usize, value: impl Fn(usize) -> T + Sync) -> HugeArray<T>
     where
         T: Send,
     {
@@ -132,7 +118,7 @@ impl<T: Pod> Default for HugeArray<T> {
     }
 }
 
-impl<T: Pod> Clone for HugeArray<T> {
+impl<T: Pod + Send + Sync> Clone for HugeArray<T> {
     fn clone(&self) -> Self {
         HugeArray::from_slice(self.as_slice())
     }
@@ -170,7 +156,7 @@ mod tests {
         // Lengths that are not multiples of the chunk, on the heap and mapped.
         for len in [0usize, 5, 4097, (1 << 20) + 3] {
             let value = |i: usize| (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15);
-            let array = HugeArray::from_fn_parallel(len, value);
+            let array = HugeArray::from_fn(len, value);
             let expected: Vec<u64> = (0..len).map(value).collect();
             assert_eq!(array.as_slice(), &expected[..]);
             assert_eq!(

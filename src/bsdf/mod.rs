@@ -33,6 +33,7 @@ pub mod dielectric;
 pub mod fresnel;
 pub mod lambert;
 pub mod lobe;
+mod lobe_set;
 pub mod microfacet;
 pub mod osb_glossy;
 pub mod phong;
@@ -43,11 +44,8 @@ mod tests;
 
 use std::f64::consts::FRAC_1_PI;
 
-use arrayvec::ArrayVec;
-
 use crate::color::Color;
 use crate::math::{Vec3, orthonormal_basis};
-use crate::scene::model::ConductorFresnel;
 use crate::spectral::Dispersion;
 
 pub use build::{Rules, lobe_sets};
@@ -55,6 +53,7 @@ pub use dielectric::GlassChoice;
 pub use fresnel::DielectricFresnel;
 pub use lambert::Lambert;
 pub use lobe::{Lobe, LobeSample};
+pub use lobe_set::LobeSet;
 
 /// The most lobes one material makes (diffuse, conductor, dielectric, Phong, coat).
 pub const MAX_LOBES: usize = 5;
@@ -71,110 +70,6 @@ pub struct BsdfSample {
     /// the probability of the lobe.
     pub pdf: f64,
     pub delta: bool,
-}
-
-/// The lobes of a material and what does not depend on the hit: their
-/// weights, which of them take the hit's colour as their tint, and (when no
-/// lobe's choice depends on the hit) their probabilities.
-#[derive(Clone, Debug, Default)]
-pub struct LobeSet {
-    lobes: ArrayVec<Lobe, MAX_LOBES>,
-    weights: [f64; MAX_LOBES],
-    /// Whether the lobe's tint is the hit's colour (else it keeps its own).
-    tinted: [bool; MAX_LOBES],
-    /// Whether a dielectric takes the rendering's Fresnel term (cav's glass
-    /// keeps none).
-    follows_rules: [bool; MAX_LOBES],
-    /// Probabilities, when they do not depend on the hit (every lobe tinted
-    /// by the hit's colour, none with a Schlick term, no angular weights).
-    fixed: bool,
-    fixed_probabilities: [f64; MAX_LOBES],
-    /// The probability of the continuous lobes, when fixed.
-    fixed_smooth: f64,
-    /// cav's weights of lobes 0, 1, 2 (diffuse, conductor, dielectric).
-    angular: Option<crate::scene::model::AngularWeights>,
-    ior: f64,
-    /// The dispersion of its dielectric lobe (none without one).
-    dispersion: Option<Dispersion>,
-    smooth_lobes: usize,
-    only_lambert: bool,
-    /// One Lambert lobe tinted by the hit's colour, nothing else.
-    single_lambert: bool,
-    reads_choice: bool,
-    reads_direction: bool,
-}
-
-impl LobeSet {
-    /// Adds `lobe` with `weight`; `tinted`: its tint becomes the hit's
-    /// colour. Lobes beyond [`MAX_LOBES`] and non-positive weights are
-    /// dropped. A dielectric is given as seen from outside.
-    pub fn push(&mut self, lobe: Lobe, weight: f64, tinted: bool) {
-        self.push_slot(lobe, weight, tinted, true);
-    }
-
-    fn push_slot(&mut self, lobe: Lobe, weight: f64, tinted: bool, follows_rules: bool) {
-        let usable = weight > 0.0 && weight.is_finite() || self.angular.is_some();
-        if self.lobes.len() == MAX_LOBES || !usable {
-            return;
-        }
-        let i = self.lobes.len();
-        let delta = lobe.is_delta();
-        self.reads_choice |= i > 0 || lobe.reads_choice();
-        self.reads_direction |= !delta;
-        if !delta {
-            self.smooth_lobes += 1;
-        }
-        if i == 0 {
-            self.only_lambert = true;
-        }
-        self.only_lambert &= delta || matches!(lobe, Lobe::Lambert(_));
-        self.weights[i] = weight;
-        self.tinted[i] = tinted;
-        self.follows_rules[i] = follows_rules;
-        self.lobes.push(lobe);
-        self.single_lambert = self.lobes.len() == 1
-            && self.tinted[0]
-            && self.angular.is_none()
-            && matches!(self.lobes[0], Lobe::Lambert(_));
-        self.fix_probabilities();
-    }
-
-    /// The probabilities when they do not depend on the hit.
-    fn fix_probabilities(&mut self) {
-        let fixed = self.angular.is_none()
-            && self.lobes.iter().zip(&self.tinted).all(|(lobe, &tinted)| {
-                tinted
-                    && !matches!(lobe, Lobe::Conductor(c) if c.fresnel == ConductorFresnel::Schlick)
-            });
-        self.fixed = fixed;
-        let total: f64 = self.weights[..self.lobes.len()].iter().sum();
-        self.fixed_smooth = 0.0;
-        for i in 0..self.lobes.len() {
-            self.fixed_probabilities[i] = if fixed { self.weights[i] / total } else { 0.0 };
-            if !self.lobes[i].is_delta() {
-                self.fixed_smooth += self.fixed_probabilities[i];
-            }
-        }
-    }
-
-    pub fn len(&self) -> usize {
-        self.lobes.len()
-    }
-
-    /// The same lobes with dielectrics of index `ior` inside (the index of
-    /// the material's dispersion at a path's wavelength); no allocation.
-    pub fn with_ior(&self, ior: f64) -> LobeSet {
-        let mut set = self.clone();
-        set.ior = ior;
-        for lobe in &mut set.lobes {
-            lobe.set_ior(ior);
-        }
-        set
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.lobes.is_empty()
-    }
 }
 
 /// A lobe set at one hit: a handful of words (the set, the hit's colour,

@@ -156,9 +156,10 @@ pub struct SamplingOptions {
     /// energy for the absence of fireflies. Off by default.
     #[arg(long)]
     pub clamp: Option<f64>,
-    /// Path integrator without light subpaths (the light tracing and
-    /// connections that find caustics through mirrors and glass): the same
-    /// expected image, noisier; for comparisons.
+    /// Path integrator without its strategies for caustics (light subpaths:
+    /// light tracing and connections; split bounces at diffuse vertices seen
+    /// through mirrors and glass): the same expected image, noisier; for
+    /// comparisons.
     #[arg(long)]
     pub no_light_paths: bool,
     /// The conventions of the rendering: one coursework renderer's

@@ -13,7 +13,7 @@ use pathtracer::checkpoint::{
 use pathtracer::image_io::{
     PendingFile, check_writable, commit_together, encode_image, is_hdr, refuse_inputs,
 };
-use pathtracer::integrator::{Integrator, SceneView};
+use pathtracer::integrator::{Integrator, SceneView, split};
 use pathtracer::interrupt;
 use pathtracer::render::{Progress, RenderSettings, Renderer, SamplingPlan};
 use pathtracer::render_job::{Crop, JobHeader};
@@ -319,4 +319,16 @@ fn print_phases(
             (_, true, true) => "on (caustics by light tracing and connections)",
         }
     );
+    let split = match (settings.light_paths, view.light_paths) {
+        _ if scene.has_media() || settings.integrator != Integrator::Path => {
+            "off (path integrator without media only)".to_string()
+        }
+        (false, _) => "off (--no-light-paths)".to_string(),
+        (true, true) => format!(
+            "on ({} bounces from diffuse vertices seen through mirrors and glass)",
+            split::SPLIT
+        ),
+        (true, false) => "off (as light subpaths, above)".to_string(),
+    };
+    say!("split bounces   {split}");
 }

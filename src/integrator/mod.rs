@@ -1,18 +1,20 @@
 //! Estimators of the radiance arriving along a camera ray.
 
+pub mod casters;
 pub mod caustics;
 pub mod lights;
 pub mod original;
 pub mod path;
 pub mod raycast;
 pub mod scatter;
+pub mod split;
 pub mod volpath;
 
 use crate::bsdf::{LobeSet, lobe_sets};
 use crate::camera::Camera;
 use crate::color::Color;
 use crate::lights::Emitters;
-use crate::look::{DispersionSensor, Look};
+use crate::look::{DispersionSensor, Look, Miss};
 use crate::math::Ray;
 use crate::sampler::Sampler;
 use crate::scene::model::{Light, Material, Scene};
@@ -85,8 +87,8 @@ pub fn media_notes(scene: &Scene, integrator: Integrator) -> Vec<String> {
         return notes;
     }
     notes.push(
-        "participating media: light subpaths (caustics) are off, the path integrator \
-         samples lights and bounces only"
+        "participating media: light subpaths and split bounces (caustics) are off, \
+         the path integrator samples lights and bounces only"
             .to_string(),
     );
     notes
@@ -109,7 +111,8 @@ pub fn dispersion_notes(scene: &Scene, integrator: Integrator) -> Vec<Notice> {
         )),
         Integrator::Path => Notice::Note(
             "dispersion: a path is split to one wavelength (or one RGB channel) at \
-             the first dispersive glass it meets; light subpaths (caustics) are off"
+             the first dispersive glass it meets; light subpaths and split bounces \
+             (caustics) are off"
                 .to_string(),
         ),
         other => Notice::Warning(format!(
@@ -191,8 +194,13 @@ pub struct SceneView<'a> {
     pub max_depth: u32,
     /// Whether the path integrator traces light subpaths for caustics (the
     /// scene has mirror or glass and small enough emitters, and no media:
-    /// see [`caustics::prepare`]).
+    /// see [`caustics::prepare`]); where they run, it also splits the
+    /// bounces of diffuse vertices seen through mirrors and glass (see
+    /// [`split`]): the scenes where caustics are rare and bright.
     pub light_paths: bool,
+    /// The mirror and glass objects, for skipping the rays of light
+    /// subpaths and split bounces that cannot find one.
+    pub casters: casters::Casters,
     /// Whether the scene has participating media (the path integrator is
     /// then [`volpath`]).
     pub media: bool,
@@ -208,6 +216,11 @@ pub struct SceneView<'a> {
     /// Camera samples draw Cambrian's wavelength (its look, in a scene
     /// with dispersion).
     pub cambrian_wavelengths: bool,
+    /// Whether the path integrator's last vertex, when Lambert, takes its
+    /// light sample alone and traces no bounce: light sampling covers every
+    /// emitter, and a ray leaving the last vertex finds no background (see
+    /// `path`).
+    pub light_sample_ends_paths: bool,
 }
 
 impl<'a> SceneView<'a> {
@@ -218,20 +231,27 @@ impl<'a> SceneView<'a> {
 
     pub fn with_look(scene: &'a Scene, world: &'a World, look: Look) -> SceneView<'a> {
         let mut emitters = Emitters::build(scene, world);
+        let emitters_cover = emitters.cover(scene, world);
         let media = scene.has_media();
+        // One-sided planes make visibility depend on direction, which
+        // light subpaths (traced from the light's side) cannot honour.
+        // Light subpaths do not account for transmittance (see `volpath`).
+        // Light subpaths carry RGB: they would cross dispersive glass
+        // with one index (see `dispersion_notes`).
+        let light_paths = !look.one_sided_planes
+            && !media
+            && !scene.has_dispersion()
+            && caustics::prepare(scene, world, &mut emitters);
         SceneView {
             scene,
             world,
             direct_lights: lights::direct_lights(scene, look.point_lights),
-            // One-sided planes make visibility depend on direction, which
-            // light subpaths (traced from the light's side) cannot honour.
-            // Light subpaths do not account for transmittance (see `volpath`).
-            // Light subpaths carry RGB: they would cross dispersive glass
-            // with one index (see `dispersion_notes`).
-            light_paths: !look.one_sided_planes
-                && !media
-                && !scene.has_dispersion()
-                && caustics::prepare(scene, world, &mut emitters),
+            light_paths,
+            casters: if light_paths {
+                casters::Casters::of(scene, world)
+            } else {
+                casters::Casters::default()
+            },
             media,
             emitters,
             max_depth: original::MAX_DEPTH,
@@ -241,6 +261,9 @@ impl<'a> SceneView<'a> {
             default_lobes: LobeSet::from_material(&Material::DEFAULT, look.lobes()),
             cambrian_wavelengths: look.dispersion_sensor == DispersionSensor::Cambrian
                 && scene.has_dispersion(),
+            light_sample_ends_paths: emitters_cover
+                && (scene.background.is_black()
+                    || matches!(look.miss, Miss::Black | Miss::CameraBackground)),
         }
     }
 }

@@ -26,8 +26,11 @@
 //! conditioned on that choice; after a delta lobe (mirror, smooth glass)
 //! the emission found counts fully. Light subpaths connect only to, and
 //! end only at, vertices whose continuous part is Lambert (the densities of
-//! their MIS weights are the cosine's). The PA1 point and directional
-//! lights are added at every vertex, as the original does.
+//! their MIS weights are the cosine's). A vertex reached by a delta lobe
+//! splits its bounce (see [`super::split`]): the emission its continuation
+//! finds through at most `MAX_CHAIN` mirror and glass vertices counts
+//! `1 / SPLIT`, and the probes add the rest. The PA1 point and directional lights are added at every
+//! vertex, as the original does.
 
 use crate::bsdf::{Bsdf, GlassChoice, LobeSet};
 use crate::color::Color;
@@ -39,6 +42,7 @@ use crate::spectral::PathSpectrum;
 
 use super::caustics::{self, CausticVertex};
 use super::scatter::{bsdf_at, emitter_choice, miss, pa1_lights, sample};
+use super::split;
 use super::{CameraSample, SceneView, Splats};
 
 /// Scattering vertices after which Russian roulette may end a path. Within
@@ -114,6 +118,13 @@ pub fn radiance(
     // `None`: the ray came from the camera or a delta lobe (weight 1).
     let mut origin: Option<SmoothOrigin> = None;
     let mut track: Option<CausticTrack> = None;
+    // The weight of emission found after the last continuous lobe and one
+    // or more delta vertices: `1 / SPLIT` when that lobe's vertex was split
+    // (see `split`), else 1.
+    let mut chain_share = 1.0;
+    // Delta vertices since the last continuous lobe (the probes follow at
+    // most `split::MAX_CHAIN`).
+    let mut delta_run = 0;
     // The light subpath of the caustic connections; every camera sample
     // traces one (light tracing divides by their number).
     let light_path: Option<CausticVertex> = if view.light_paths {
@@ -144,6 +155,7 @@ pub fn radiance(
                     }
                     None => 1.0,
                 },
+                (None, _) if delta_run <= split::MAX_CHAIN => chain_share,
                 (None, _) => 1.0,
                 (Some(from), _) => {
                     let light_pdf = view.emitters.pdf(&from.point, ray.time, &hit);
@@ -168,21 +180,43 @@ pub fn radiance(
             bsdf = bsdf.with_set(&dispersed);
         }
         result += throughput * pa1_lights(view, &at, &bsdf, &wo, &spectrum);
+        if depth == view.max_depth
+            && view.light_sample_ends_paths
+            && bsdf.lambert().is_some()
+            && bsdf.smooth_probability() >= 1.0
+        {
+            // The last vertex: its bounce could only find emission, which
+            // the light sample then counts alone (weight 1, no MIS).
+            result += throughput
+                * light_sample(
+                    view, &at, &bsdf, &wo, 1.0, ray.time, sampler, &spectrum, false,
+                );
+            break;
+        }
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
             break;
         };
         // Where the ray that found this vertex came from (for the caustic track).
         let arrived_from = origin.take();
+        let split_here = split::splits(view, depth, arrived_from.is_none());
+        if split_here && bsdf.smooth_probability() > 0.0 {
+            result += throughput
+                * split::chain_emission(view, &at, &bsdf, &wo, depth, ray.time, sampler, &spectrum);
+        }
         let direction = scattered.wi;
         if scattered.delta {
             if caustics::crosses_nonreciprocal(&at, &scattered.wi) {
                 track = None;
             }
             count_chain_vertex(&mut track);
+            delta_run += 1;
         } else {
+            delta_run = 0;
             let smooth = bsdf.smooth_probability();
             result += throughput
-                * light_sample(view, &at, &bsdf, &wo, smooth, ray.time, sampler, &spectrum);
+                * light_sample(
+                    view, &at, &bsdf, &wo, smooth, ray.time, sampler, &spectrum, true,
+                );
             let lambert = bsdf.lambert();
             if let Some(f) = lambert
                 && let Some(y) = light_path.filter(|y| depth + 1 + y.chain <= view.max_depth)
@@ -194,6 +228,11 @@ pub fn radiance(
                 Some(from) if from.lambert => caustic_track(&from, &at, &ray, &direction),
                 None if depth == 1 => camera_track(&at, &direction),
                 _ => None,
+            };
+            chain_share = if split_here {
+                1.0 / split::SPLIT as f64
+            } else {
+                1.0
             };
             origin = Some(SmoothOrigin {
                 point: at.point,
@@ -320,6 +359,7 @@ fn light_sample(
     time: f64,
     sampler: &mut Sampler,
     spectrum: &PathSpectrum,
+    mis: bool,
 ) -> Color {
     if view.emitters.is_empty() {
         return Color::BLACK;
@@ -340,8 +380,11 @@ fn light_sample(
     {
         return Color::BLACK;
     }
-    let bsdf_pdf = bsdf.pdf(wo, &light.direction) / smooth;
-    let weight = power_heuristic(light.pdf, bsdf_pdf);
+    let weight = if mis {
+        power_heuristic(light.pdf, bsdf.pdf(wo, &light.direction) / smooth)
+    } else {
+        1.0
+    };
     spectrum.factor(light.emission) * spectrum.factor(reflected) * (weight / (light.pdf * smooth))
 }
 

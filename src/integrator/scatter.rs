@@ -2,7 +2,7 @@
 //! contract: build the BSDF of a hit, sample it spending sample dimensions
 //! only on what it reads, pick an emitter, and add the PA1 lights.
 
-use crate::bsdf::{Bsdf, BsdfSample, GlassChoice, Rules};
+use crate::bsdf::{Bsdf, BsdfSample, GlassChoice, LobeSet, Rules};
 use crate::color::Color;
 use crate::look::Miss;
 use crate::math::Vec3;
@@ -21,16 +21,20 @@ pub fn bsdf_at<'v>(view: &'v SceneView, at: &Shading, wo: &Vec3, glass: GlassCho
         fresnel: view.look.fresnel,
         glass,
     };
-    let set = view
-        .lobe_sets
-        .get(at.material_index)
-        .unwrap_or(&view.default_lobes);
+    let set = lobe_set(view, at.material_index);
     if view.look.texture_times_color && at.material.texture.is_some() {
         let cos_o = at.normal.dot(wo);
         let color = at.color * at.material.color;
         return Bsdf::new(set, color, &at.normal, at.entering, cos_o, rules);
     }
     at.bsdf(set, wo, rules)
+}
+
+/// The lobes of material `index` (the default material's for a hit
+/// without one).
+#[inline(always)]
+pub fn lobe_set<'v>(view: &'v SceneView, index: usize) -> &'v LobeSet {
+    view.lobe_sets.get(index).unwrap_or(&view.default_lobes)
 }
 
 /// A direction from `bsdf` for `wo`: the lobe choice and the direction are

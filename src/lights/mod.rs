@@ -24,6 +24,8 @@ pub mod emitter;
 #[cfg(test)]
 mod camera_side_tests;
 #[cfg(test)]
+mod cut_tests;
+#[cfg(test)]
 mod tests;
 
 use crate::color::Color;
@@ -132,6 +134,35 @@ impl Emitters {
             first_entry,
             light_path_starts: None,
         }
+    }
+
+    /// Whether light sampling can pick every emitting surface of `world`:
+    /// each primitive with an emissive material is in the table, and every
+    /// entry that emits has a positive probability. Then a light sample
+    /// alone estimates all the light a vertex receives directly, and the
+    /// BSDF's own bounce is needed only for the rest of the path.
+    pub fn cover(&self, scene: &Scene, world: &World) -> bool {
+        let emits = |material: usize| {
+            scene
+                .materials
+                .get(material)
+                .is_some_and(|m| !m.emission.is_black())
+        };
+        let listed = world
+            .primitives()
+            .iter()
+            .enumerate()
+            .all(|(index, primitive)| {
+                !primitive.materials().any(emits) || self.first_entry.get(index) != Some(&NONE)
+            });
+        let picked = self.entries.iter().enumerate().all(|(index, entry)| {
+            entry.emission.is_black()
+                || self
+                    .distribution
+                    .as_ref()
+                    .is_some_and(|d| d.pmf(index) > 0.0)
+        });
+        listed && picked
     }
 
     /// Whether light sampling has nothing to pick.

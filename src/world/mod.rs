@@ -3,6 +3,7 @@
 //! the two ray queries of the integrators.
 
 mod builder;
+mod lanes;
 mod plain;
 mod primitive;
 
@@ -58,10 +59,12 @@ impl WorldHit {
     /// spawned from it do not re-hit this surface, even with `t_min = 0`
     /// (unless the hit `leaves_from_point`: then the point itself).
     pub fn spawn_origin(&self, direction: &Vec3) -> Point3 {
-        if self.leaves_from_point {
-            return self.point;
-        }
-        offset_origin(&self.point, &self.geometric_normal, direction)
+        spawn_origin(
+            &self.point,
+            &self.geometric_normal,
+            self.leaves_from_point,
+            direction,
+        )
     }
 
     /// A ray leaving the hit in `direction` at shutter time `time`.
@@ -70,12 +73,62 @@ impl WorldHit {
     }
 }
 
+/// Origin of a ray leaving a surface point in `direction`: `point` pushed
+/// off along the geometric normal `geometric` by [`offset_origin`], or
+/// `point` itself where the hit `leaves_from_point` (see
+/// [`WorldHit::leaves_from_point`]).
+#[inline]
+pub fn spawn_origin(
+    point: &Point3,
+    geometric: &Vec3,
+    leaves_from_point: bool,
+    direction: &Vec3,
+) -> Point3 {
+    if leaves_from_point {
+        return *point;
+    }
+    offset_origin(point, geometric, direction)
+}
+
 /// A look's conventions for how shapes meet rays (the exact ones by default).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ShapeRules {
     /// Planes are hit from the front only, so light passes them from behind.
     pub one_sided_planes: bool,
     pub sphere_test: SphereTest,
+}
+
+/// The box a linear primitive is culled by (see `World::linear_boxes`):
+/// its world bounds grown by a millionth of their size and distance from
+/// the origin, far more than the rounding of a slab test.
+fn culling_box(primitive: &Primitive) -> Option<Aabb> {
+    if !matches!(primitive.shape, Shape::Mesh { .. } | Shape::Revolution(_)) {
+        return None;
+    }
+    let bounds = primitive.bounds().filter(Aabb::is_valid)?;
+    let scale = bounds
+        .min
+        .iter()
+        .chain(bounds.max.iter())
+        .fold(1.0f64, |m, c| m.max(c.abs()));
+    Some(bounds.expanded(1e-6 * scale))
+}
+
+/// Whether `ray` misses the culling box of a linear primitive (none: never)
+/// within `(t_min, t_max)`; the ray's inverse direction is computed on the
+/// first box a query meets, and kept for the next.
+#[inline]
+fn culled(
+    culling: &Option<Aabb>,
+    ray: &Ray,
+    inverse_direction: &mut Option<Vec3>,
+    t_min: f64,
+    t_max: f64,
+) -> bool {
+    culling.as_ref().is_some_and(|b| {
+        let inverse = inverse_direction.get_or_insert_with(|| ray.direction.map(|d| 1.0 / d));
+        b.clip(&ray.origin, inverse, t_min, t_max).is_none()
+    })
 }
 
 /// Worlds with at most this many bounded primitives go without a BVH: their
@@ -92,6 +145,10 @@ pub struct World {
     /// Other primitives tested one by one (transformed planes; in a world
     /// without BVH, every bounded primitive that is not plain).
     linear: Vec<u32>,
+    /// Per entry of `linear`: the world box (slightly grown) of a mesh or a
+    /// surface of revolution, whose own test costs far more than a box
+    /// test of the untransformed ray; `None` for the others.
+    linear_boxes: Vec<Option<Aabb>>,
     /// Primitives in the BVH, in the slot order of `bvh` (empty in a world
     /// without BVH).
     bounded: Vec<u32>,
@@ -161,10 +218,16 @@ impl World {
         } else {
             bvh = Bvh::build(&boxes);
         }
+        plain.pack();
+        let linear_boxes = linear
+            .iter()
+            .map(|&index| culling_box(&primitives[index as usize]))
+            .collect();
         World {
             primitives,
             plain,
             linear,
+            linear_boxes,
             bounded,
             bvh,
             bounds,
@@ -185,11 +248,17 @@ impl World {
         let mut best: Option<(usize, Intersection)> = None;
         let mut limit = t_max;
         self.plain.nearest(ray, t_min, &mut limit, &mut best);
-        for &index in &self.linear {
-            let index = index as usize;
-            if let Some(hit) = self.primitives[index].intersect(ray, t_min, limit) {
-                limit = hit.t;
-                best = Some((index, hit));
+        if !self.linear.is_empty() {
+            let mut inverse_direction = None;
+            for (&index, culling) in self.linear.iter().zip(&self.linear_boxes) {
+                if culled(culling, ray, &mut inverse_direction, t_min, limit) {
+                    continue;
+                }
+                let index = index as usize;
+                if let Some(hit) = self.primitives[index].intersect(ray, t_min, limit) {
+                    limit = hit.t;
+                    best = Some((index, hit));
+                }
             }
         }
         if !self.bounded.is_empty() {
@@ -225,10 +294,16 @@ impl World {
     /// Whether anything lies on the ray with `t_min < t < t_max`.
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         self.plain.any(ray, t_min, t_max)
-            || self
-                .linear
-                .iter()
-                .any(|&index| self.primitives[index as usize].occluded(ray, t_min, t_max))
+            || !self.linear.is_empty() && {
+                let mut inverse_direction = None;
+                self.linear
+                    .iter()
+                    .zip(&self.linear_boxes)
+                    .any(|(&index, culling)| {
+                        !culled(culling, ray, &mut inverse_direction, t_min, t_max)
+                            && self.primitives[index as usize].occluded(ray, t_min, t_max)
+                    })
+            }
             || (!self.bounded.is_empty()
                 && self.bvh.any(ray, t_min, t_max, |slot| {
                     self.primitives[self.bounded[slot] as usize].occluded(ray, t_min, t_max)
@@ -253,168 +328,4 @@ impl World {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    use crate::math::Matrix;
-    use std::sync::Arc;
-
-    use crate::scene::model::{MeshData, Object};
-
-    fn scene(root: Object) -> Scene {
-        Scene::new(Vec::new(), root)
-    }
-
-    fn translate(offset: Vec3, child: Object) -> Object {
-        let matrix = Matrix::new_translation(&offset);
-        Object::Transform {
-            matrix,
-            inverse: Matrix::new_translation(&-offset),
-            child: Box::new(child),
-        }
-    }
-
-    #[test]
-    fn build_composes_transforms_and_shares_meshes() {
-        let data = Arc::new(MeshData {
-            positions: vec![Point3::zeros(), Point3::x(), Point3::y()],
-            normals: None,
-            uvs: None,
-            triangles: vec![[0, 1, 2]],
-        });
-        let mesh = |material| Object::Mesh {
-            mesh: Arc::clone(&data),
-            smooth: false,
-            material,
-            face_materials: None,
-        };
-        let root = Object::Group(vec![
-            translate(
-                Vec3::new(0.0, 0.0, -5.0),
-                translate(Vec3::new(10.0, 0.0, 0.0), mesh(1)),
-            ),
-            translate(Vec3::zeros(), mesh(2)),
-            Object::Sphere {
-                center: Point3::zeros(),
-                radius: 0.0,
-                motion: Vec3::zeros(),
-                material: 3,
-            },
-            Object::Plane {
-                normal: Vec3::y(),
-                offset: -1.0,
-                material: 4,
-            },
-        ]);
-        let world = World::build(&scene(root));
-        // The zero-radius sphere is dropped; the identity transform is not stored.
-        assert_eq!(world.primitives().len(), 3);
-        assert!(world.primitive(1).transform.is_none());
-        let (Shape::Mesh { mesh: a, .. }, Shape::Mesh { mesh: b, .. }) =
-            (&world.primitive(0).shape, &world.primitive(1).shape)
-        else {
-            panic!("meshes expected");
-        };
-        assert!(Arc::ptr_eq(a, b), "one geometry mesh per MeshData");
-        // Nested translations compose: the first instance sits at (10, 0, -5).
-        let ray = Ray::new(Point3::new(10.25, 0.25, 0.0), -Vec3::z(), 0.0);
-        let hit = world.intersect(&ray, 0.0, f64::INFINITY).unwrap();
-        assert_eq!(hit.material, 1);
-        assert!((hit.t - 5.0).abs() < 1e-12);
-        assert!((hit.point - Point3::new(10.25, 0.25, -5.0)).norm() < 1e-12);
-        let down = Ray::new(Point3::new(3.0, 0.0, 3.0), -Vec3::y(), 0.0);
-        assert_eq!(
-            world.intersect(&down, 0.0, f64::INFINITY).unwrap().material,
-            4
-        );
-        assert!(world.occluded(&down, 0.0, 2.0));
-        assert!(!world.occluded(&down, 0.0, 0.5));
-        assert!((world.bounds().max.x - 11.0).abs() < 1e-12);
-    }
-
-    /// Spheres (some moving, some transformed), triangles and planes.
-    fn random_primitives(rng: &mut crate::rng::Rng, count: usize) -> Vec<Primitive> {
-        use crate::geometry::{Plane, Sphere, Triangle};
-        let mut point = |scale: f64| {
-            Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * scale
-                - Vec3::repeat(scale / 2.0)
-        };
-        let mut primitives = Vec::new();
-        for i in 0..count {
-            let center = point(10.0);
-            let (shape, transform) = match i % 4 {
-                0 => (Shape::Sphere(Sphere::new(center, 1.0, Vec3::zeros())), None),
-                1 => (Shape::Sphere(Sphere::new(center, 0.5, point(2.0))), None),
-                2 => {
-                    let matrix = Matrix::new_translation(&center) * Matrix::new_scaling(0.7);
-                    let inverse = matrix.try_inverse().expect("invertible");
-                    let sphere = Sphere::new(Point3::zeros(), 1.0, Vec3::zeros());
-                    let transform = Box::new(crate::geometry::Transform::new(matrix, inverse));
-                    (Shape::Sphere(sphere), Some(transform))
-                }
-                _ => {
-                    let triangle =
-                        Triangle::new([center, center + point(3.0), center + point(3.0)]);
-                    (Shape::Triangle(triangle), None)
-                }
-            };
-            primitives.push(Primitive {
-                shape,
-                transform,
-                material: i,
-                face_materials: None,
-            });
-        }
-        for axis in 0..3 {
-            let mut normal = Vec3::zeros();
-            normal[axis] = 1.0;
-            let plane = Plane::new(normal, 8.0).expect("valid plane");
-            primitives.push(Primitive {
-                shape: Shape::Plane(plane),
-                transform: None,
-                material: 100 + axis,
-                face_materials: None,
-            });
-        }
-        primitives
-    }
-
-    #[test]
-    fn small_and_large_worlds_equal_brute_force() {
-        let mut rng = crate::rng::Rng::new(11, 12);
-        // 6 bounded primitives: tested linearly; 40: through the BVH.
-        for count in [6, 40] {
-            let world = World::from_primitives(random_primitives(&mut rng, count));
-            assert_eq!(world.bounded.is_empty(), count <= LINEAR_LIMIT);
-            let mut hits = 0;
-            for _ in 0..3000 {
-                let origin = Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 12.0
-                    - Vec3::repeat(6.0);
-                let direction =
-                    Vec3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) - Vec3::repeat(0.5);
-                let ray = Ray::new(origin, direction.normalize(), rng.next_f64());
-                let t_max = 4.0 + 20.0 * rng.next_f64();
-                let brute = world
-                    .primitives()
-                    .iter()
-                    .enumerate()
-                    .filter_map(|(i, p)| p.intersect(&ray, 0.0, t_max).map(|hit| (i, hit.t)))
-                    .min_by(|a, b| a.1.total_cmp(&b.1));
-                let found = world.intersect(&ray, 0.0, t_max);
-                assert_eq!(found.map(|h| h.primitive), brute.map(|b| b.0));
-                if let (Some(hit), Some((_, t))) = (found, brute) {
-                    assert!((hit.t - t).abs() <= 1e-9 * t.max(1.0));
-                    hits += 1;
-                }
-                assert_eq!(world.occluded(&ray, 0.0, t_max), brute.is_some());
-            }
-            assert!(hits > 500, "{hits} hits of 3000");
-        }
-    }
-
-    #[test]
-    fn world_is_send_and_sync() {
-        fn check<T: Send + Sync>() {}
-        check::<World>();
-    }
-}
+mod tests;

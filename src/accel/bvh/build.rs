@@ -251,7 +251,7 @@ fn choose_split(
         if binning.scale[axis] == 0.0 {
             continue;
         }
-        let (bounds, counts) = (&bins.bounds[axis], &bins.counts[axis]);
+        let (bounds, counts) = (&bins.bounds(axis), &bins.counts[axis]);
         // Sweep from the right to get suffix areas and counts.
         let mut right_area = [0.0; BIN_COUNT];
         let mut right_count = [0u32; BIN_COUNT];
@@ -296,13 +296,14 @@ fn choose_split(
     }
     let (mid, left_centroids, right_centroids) = partition(items, &binning, axis, boundary);
     let side = |bins: &[Bounds]| bins.iter().fold(Bounds::EMPTY, |a, b| a.union(b));
+    let split_bins = bins.bounds(axis);
     let left = Range {
-        bounds: side(&bins.bounds[axis][..boundary]),
+        bounds: side(&split_bins[..boundary]),
         centroids: left_centroids,
         first: 0,
     };
     let right = Range {
-        bounds: side(&bins.bounds[axis][boundary..used]),
+        bounds: side(&split_bins[boundary..used]),
         centroids: right_centroids,
         first: 0,
     };

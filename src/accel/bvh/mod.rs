@@ -1,6 +1,6 @@
 //! A bounding volume hierarchy over boxes: a parallel binned-SAH build of a
-//! binary tree (`build`), collapsed into 8-wide nodes of two cache lines
-//! with child boxes quantised outward to 8 bits (`wide`), and
+//! binary tree (`build`), collapsed (`collapse`) into 8-wide nodes of two
+//! cache lines with child boxes quantised outward to 8 bits (`wide`), and
 //! allocation-free traversal that tests the eight child boxes at once
 //! (`ray8`), nearest child first (`traverse`; nearest hit: with a
 //! shrinking `t_max`; any hit: stops at the first). Nodes live in huge pages when the tree is large
@@ -12,6 +12,7 @@
 
 mod binning;
 mod build;
+mod collapse;
 mod ray8;
 mod traverse;
 mod wide;
@@ -55,8 +56,10 @@ struct Collapsed {
 }
 
 fn collapsed(boxes: &[Aabb], leaves: Leaves) -> Collapsed {
+    use rayon::prelude::*;
+    // In parallel, in the boxes' order (an indexed collect keeps it).
     let items: Vec<Item> = boxes
-        .iter()
+        .par_iter()
         .enumerate()
         .filter(|(_, b)| b.is_valid())
         .map(|(i, b)| Item {
@@ -69,10 +72,12 @@ fn collapsed(boxes: &[Aabb], leaves: Leaves) -> Collapsed {
         max_depth: MAX_DEPTH,
     };
     // The exact (f64) bounds, for `may_hit`: the tree's are rounded to f32.
+    // (Unions are exact, so the chunking does not change the result.)
     let exact = boxes
-        .iter()
+        .par_iter()
         .filter(|b| b.is_valid())
-        .fold(Aabb::empty(), |acc, b| acc.union(b));
+        .fold(Aabb::empty, |acc, b| acc.union(b))
+        .reduce(Aabb::empty, |a, b| a.union(&b));
     let built = build::build(items, settings);
     if built.nodes.is_empty() {
         return Collapsed {
@@ -82,7 +87,7 @@ fn collapsed(boxes: &[Aabb], leaves: Leaves) -> Collapsed {
             bounds: None,
         };
     }
-    let (nodes, depth) = wide::collapse(&built.nodes);
+    let (nodes, depth) = collapse::collapse(&built.nodes);
     Collapsed {
         nodes,
         indices: built.items.iter().map(|item| item.index).collect(),
@@ -120,7 +125,7 @@ impl Bvh {
             max_size: width.max(SINGLE.max_size),
         };
         let mut c = collapsed(boxes, leaves);
-        let slots = wide::pad_leaves(&mut c.nodes, &c.indices, width);
+        let slots = collapse::pad_leaves(&mut c.nodes, &c.indices, width);
         let bvh = Bvh {
             nodes: HugeArray::from_slice(&c.nodes),
             indices: (0..c.indices.len() as u32).collect(),
@@ -177,7 +182,7 @@ impl Bvh {
     where
         F: FnMut(usize, f64) -> Option<f64>,
     {
-        self.traverse_leaves(ray, t_min, t_max, |first, count, mut t_max| {
+        let leaf = |first: usize, count: usize, mut t_max: f64| {
             let mut hit = None;
             for k in first..first + count {
                 if let Some(t) = leaf(self.entry(k), t_max) {
@@ -186,7 +191,9 @@ impl Bvh {
                 }
             }
             hit
-        })
+        };
+        // Leaves over separate primitives: nothing of theirs to prefetch.
+        self.traverse_leaves(ray, t_min, t_max, leaf, |_| {})
     }
 
     /// Any-hit traversal: true as soon as `leaf(index)` reports a hit.
@@ -195,9 +202,8 @@ impl Bvh {
     where
         F: FnMut(usize) -> bool,
     {
-        self.any_leaves(ray, t_min, t_max, |first, count| {
-            (first..first + count).any(|k| leaf(self.entry(k)))
-        })
+        let leaf = |first: usize, count: usize| (first..first + count).any(|k| leaf(self.entry(k)));
+        self.any_leaves(ray, t_min, t_max, leaf, |_| {})
     }
 }
 

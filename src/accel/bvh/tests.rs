@@ -92,10 +92,26 @@ fn leaf_order_reports_slots_of_the_original_order_in_groups() {
                 nearest(&bvh, &boxes, &ray),
                 nearest(&ordered, &permuted, &ray)
             );
-            ordered.traverse_leaves(&ray, 0.0, f64::INFINITY, |first, count, _| {
-                starts.push((first, count));
-                None
-            });
+            // Every leaf the traversal tests was prefetched when its
+            // parent's test hit it.
+            let prefetched = std::cell::RefCell::new(Vec::new());
+            let visited = starts.len();
+            ordered.traverse_leaves(
+                &ray,
+                0.0,
+                f64::INFINITY,
+                |first, count, _| {
+                    starts.push((first, count));
+                    None
+                },
+                |first| prefetched.borrow_mut().push(first),
+            );
+            let prefetched = prefetched.into_inner();
+            assert!(
+                starts[visited..]
+                    .iter()
+                    .all(|(first, _)| prefetched.contains(first))
+            );
         }
         assert!(
             starts
@@ -231,6 +247,36 @@ fn the_tree_is_the_same_for_any_thread_count() {
     assert_eq!(one.nodes.len(), three.nodes.len());
     for (a, b) in one.nodes.iter().zip(three.nodes.iter()) {
         assert_eq!(a, b);
+    }
+}
+
+#[test]
+fn the_parallel_collapse_equals_one_depth_first_pass() {
+    let mut rng = Rng::new(7, 8);
+    let boxes = random_boxes(&mut rng, 20_000);
+    // A whole tree; leaves forced at depth 3 and at the root (too large
+    // for a node entry: nodes over runs of them).
+    for max_depth in [MAX_DEPTH, 3, 0] {
+        let items = boxes
+            .iter()
+            .enumerate()
+            .map(|(i, b)| build::Item {
+                bounds: Bounds::from_aabb(b),
+                index: i as u32,
+            })
+            .collect();
+        let settings = Settings {
+            leaves: SINGLE,
+            max_depth,
+        };
+        let binary = build::build(items, settings).nodes;
+        let (parallel, depth) = collapse::collapse(&binary);
+        let (sequential, sequential_depth) = collapse::collapse_sequentially(&binary);
+        // Deep enough that subtrees below the root's children exist.
+        let least = if max_depth == MAX_DEPTH { 3 } else { 2 };
+        assert!(depth >= least, "{max_depth}: {depth}");
+        assert_eq!(depth, sequential_depth);
+        assert_eq!(parallel, sequential);
     }
 }
 

@@ -1,14 +1,13 @@
-//! The wide tree: binary nodes collapsed `W` children at a time into
-//! 128-byte nodes (two cache lines). Child boxes are quantised to 8 bits per
+//! The wide tree's nodes: `W` children in 128 bytes (two cache lines),
+//! made by `collapse` from the binary tree. Child boxes are quantised to 8 bits per
 //! plane on a grid of the node: per axis an origin and a power-of-two step
 //! chosen so that every plane `origin + q step` (`q` in 0..=255) is an f32
 //! computed exactly; mins are rounded down and maxes up, so a child's grid
 //! box always contains its f64 box and no hit is lost.
 
 use bytemuck::{Pod, Zeroable};
-use rayon::slice::ParallelSliceMut;
 
-use super::build::{BinaryNode, Bounds};
+use super::build::Bounds;
 
 /// Children per node, tested as one 8-lane vector (`ray8`): on the 871k
 /// dragon 7.5 node visits per closest-hit query instead of 11.1 with 4.
@@ -20,7 +19,7 @@ const _: () = assert!(std::mem::size_of::<Node>() == 128);
 /// Largest leaf a node entry holds (`count` is one byte); larger leaves,
 /// which only a build forced at its depth limit makes, become nodes over
 /// parts of them.
-const MAX_COUNT: usize = u8::MAX as usize;
+pub(super) const MAX_COUNT: usize = u8::MAX as usize;
 
 /// Biased f32 exponent of an axis without a finite grid (a child box
 /// reaching beyond the f32 range): its step is `+inf`, every plane is
@@ -142,164 +141,10 @@ pub(super) fn grid(low: f32, high: f32) -> Option<(u8, f32)> {
     None
 }
 
-/// Collapses the binary tree (root at slot 0, not empty) into `W`-wide
-/// nodes (root at 0); returns them and the depth of the deepest wide node.
-pub(super) fn collapse(binary: &[BinaryNode]) -> (Vec<Node>, usize) {
-    let mut nodes = Vec::with_capacity(binary.len() / (W - 1) + 1);
-    let root = &binary[0];
-    let depth = if root.count > 0 {
-        // A single leaf: one node with one child.
-        let children = [Child::Leaf {
-            bounds: root.bounds,
-            first: root.offset,
-            count: root.count,
-        }];
-        emit_children(&children, &mut nodes, 0)
-    } else {
-        emit(binary, 0, &mut nodes, 0)
-    };
-    (nodes, depth)
-}
-
-/// A child slot before it is written: an interior binary node or a run of
-/// leaf entries.
-#[derive(Clone, Copy)]
-enum Child {
-    Interior {
-        slot: usize,
-    },
-    Leaf {
-        bounds: Bounds,
-        first: u32,
-        count: u32,
-    },
-}
-
-fn area(b: &Bounds) -> f64 {
-    let e = [0, 1, 2].map(|k| b.max[k] as f64 - b.min[k] as f64);
-    e[0] * e[1] + e[1] * e[2] + e[2] * e[0]
-}
-
-/// Emits the wide node of the interior binary node at `slot`, then its
-/// interior children; returns the deepest wide level below it.
-fn emit(binary: &[BinaryNode], slot: usize, nodes: &mut Vec<Node>, depth: usize) -> usize {
-    // Open the largest interior child until there are `W`.
-    let mut open = arrayvec::ArrayVec::<usize, W>::new();
-    open.push(slot + 1);
-    open.push(binary[slot].offset as usize);
-    while open.len() < W {
-        let largest = open
-            .iter()
-            .enumerate()
-            .filter(|(_, c)| binary[**c].count == 0)
-            .max_by(|a, b| area(&binary[*a.1].bounds).total_cmp(&area(&binary[*b.1].bounds)));
-        let Some((i, &slot)) = largest else {
-            break;
-        };
-        open[i] = slot + 1;
-        open.insert(i + 1, binary[slot].offset as usize);
-    }
-    let children: arrayvec::ArrayVec<Child, W> = open
-        .iter()
-        .map(|&c| {
-            let node = &binary[c];
-            if node.count > 0 {
-                Child::Leaf {
-                    bounds: node.bounds,
-                    first: node.offset,
-                    count: node.count,
-                }
-            } else {
-                Child::Interior { slot: c }
-            }
-        })
-        .collect();
-    let bounds = |child: &Child| match child {
-        Child::Interior { slot } => binary[*slot].bounds,
-        Child::Leaf { bounds, .. } => *bounds,
-    };
-    let index = nodes.len();
-    let boxes: arrayvec::ArrayVec<Bounds, W> = children.iter().map(bounds).collect();
-    nodes.push(quantise(&boxes));
-    let mut deepest = depth;
-    for (i, child) in children.iter().enumerate() {
-        let target = nodes.len() as u32;
-        match *child {
-            Child::Interior { slot } => {
-                deepest = deepest.max(emit(binary, slot, nodes, depth + 1));
-                set_target(&mut nodes[index], i, target, 0);
-            }
-            Child::Leaf { first, count, .. } if count as usize <= MAX_COUNT => {
-                set_target(&mut nodes[index], i, first, count);
-            }
-            Child::Leaf {
-                bounds,
-                first,
-                count,
-            } => {
-                deepest = deepest.max(emit_leaf(bounds, first, count, nodes, depth + 1));
-                set_target(&mut nodes[index], i, target, 0);
-            }
-        }
-    }
-    deepest
-}
-
-/// Emits a node over the entries `first..first + count` of one leaf too
-/// large for a node entry, in `W` runs (each with the leaf's box).
-fn emit_leaf(bounds: Bounds, first: u32, count: u32, nodes: &mut Vec<Node>, depth: usize) -> usize {
-    let part = count.div_ceil(W as u32);
-    let children: arrayvec::ArrayVec<Child, W> = (0..W as u32)
-        .filter(|i| i * part < count)
-        .map(|i| Child::Leaf {
-            bounds,
-            first: first + i * part,
-            count: part.min(count - i * part),
-        })
-        .collect();
-    emit_children(&children, nodes, depth)
-}
-
-/// Emits a node whose children are all leaves (runs of entries).
-fn emit_children(children: &[Child], nodes: &mut Vec<Node>, depth: usize) -> usize {
-    let boxes: arrayvec::ArrayVec<Bounds, W> = children
-        .iter()
-        .map(|c| match c {
-            Child::Leaf { bounds, .. } => *bounds,
-            Child::Interior { .. } => Bounds::EMPTY,
-        })
-        .collect();
-    let index = nodes.len();
-    nodes.push(quantise(&boxes));
-    let mut deepest = depth;
-    for (i, child) in children.iter().enumerate() {
-        if let Child::Leaf {
-            bounds,
-            first,
-            count,
-        } = *child
-        {
-            if count as usize <= MAX_COUNT {
-                set_target(&mut nodes[index], i, first, count);
-            } else {
-                let target = nodes.len() as u32;
-                deepest = deepest.max(emit_leaf(bounds, first, count, nodes, depth + 1));
-                set_target(&mut nodes[index], i, target, 0);
-            }
-        }
-    }
-    deepest
-}
-
-fn set_target(node: &mut Node, i: usize, target: u32, count: u32) {
-    node.child[i] = target;
-    node.count[i] = count as u8;
-}
-
 /// A node with the given child boxes (at most `W`, f32 planes that contain
 /// the primitives' f64 boxes) on its grid; targets
 /// are set by the caller.
-fn quantise(boxes: &[Bounds]) -> Node {
+pub(super) fn quantise(boxes: &[Bounds]) -> Node {
     let mut node = Node::EMPTY;
     let low: [[f32; 3]; W] = std::array::from_fn(|i| boxes.get(i).map_or([0.0; 3], |b| b.min));
     let high: [[f32; 3]; W] = std::array::from_fn(|i| boxes.get(i).map_or([0.0; 3], |b| b.max));
@@ -333,30 +178,4 @@ fn quantise(boxes: &[Bounds]) -> Node {
     }
     node.valid = ((1u32 << boxes.len()) - 1) as u8;
     node
-}
-
-/// Moves every leaf to a slot that is a multiple of `width` (leaves in
-/// leaf order, each on from the previous one's last group) and returns
-/// the item of each slot (`indices` holds them in leaf order), `u32::MAX`
-/// for the slots that pad a leaf's last group.
-pub(super) fn pad_leaves(nodes: &mut [Node], indices: &[u32], width: usize) -> Vec<u32> {
-    // (first entry, node, child) of every leaf, in leaf order.
-    let mut leaves: Vec<(u32, usize, usize)> = Vec::new();
-    for (n, node) in nodes.iter().enumerate() {
-        for i in 0..W {
-            if node.valid & (1 << i) != 0 && node.count[i] > 0 {
-                leaves.push((node.child[i], n, i));
-            }
-        }
-    }
-    leaves.par_sort_unstable();
-    let mut slots = Vec::with_capacity(indices.len() + indices.len() / 2);
-    for (first, n, i) in leaves {
-        let count = nodes[n].count[i] as usize;
-        nodes[n].child[i] = slots.len() as u32;
-        let first = first as usize;
-        slots.extend_from_slice(&indices[first..first + count]);
-        slots.resize(slots.len().next_multiple_of(width), u32::MAX);
-    }
-    slots
 }

@@ -92,13 +92,9 @@ impl LeafTriangles {
         };
         let count = slots.len() / LANES;
         let blocks = if single {
-            Blocks::Single(HugeArray::from_fn_parallel(count, |b| {
-                Block::from_lanes(&lanes(b))
-            }))
+            Blocks::Single(HugeArray::from_fn(count, |b| Block::from_lanes(&lanes(b))))
         } else {
-            Blocks::Double(HugeArray::from_fn_parallel(count, |b| {
-                Block::from_lanes(&lanes(b))
-            }))
+            Blocks::Double(HugeArray::from_fn(count, |b| Block::from_lanes(&lanes(b))))
         };
         LeafTriangles {
             len: bvh.len(),
@@ -182,7 +178,7 @@ fn nearest<B: Block>(
     t_max: f64,
 ) -> Option<TriangleHit> {
     let mut best = None;
-    bvh.traverse_leaves(ray, t_min, t_max, |first, count, mut t_max| {
+    let leaf = |first: usize, count: usize, mut t_max: f64| {
         let mut found = None;
         for b in leaf_blocks(first, count) {
             let block = &blocks[b];
@@ -209,15 +205,25 @@ fn nearest<B: Block>(
             }
         }
         found
-    });
+    };
+    bvh.traverse_leaves(ray, t_min, t_max, leaf, |first| prefetch(blocks, first));
     best
 }
 
 #[inline(always)]
 fn any<B: Block>(bvh: &Bvh, blocks: &[B], ray: &Ray, t_min: f64, t_max: f64) -> bool {
-    bvh.any_leaves(ray, t_min, t_max, |first, count| {
+    let leaf = |first: usize, count: usize| {
         leaf_blocks(first, count).any(|b| test(&blocks[b].coords(), ray, t_min, t_max).mask != 0)
-    })
+    };
+    bvh.any_leaves(ray, t_min, t_max, leaf, |first| prefetch(blocks, first))
+}
+
+/// Starts reading the block of the leaf at slot `first`.
+#[inline(always)]
+fn prefetch<B: Block>(blocks: &[B], first: usize) {
+    if let Some(block) = blocks.get(first / LANES) {
+        crate::accel::prefetch(block);
+    }
 }
 
 #[cfg(test)]

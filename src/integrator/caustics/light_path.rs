@@ -80,6 +80,11 @@ pub fn trace(
         direction,
         time,
     );
+    // Ending at its first hit unless that is a mirror or glass, the
+    // subpath needs no ray when it cannot find one.
+    if !view.casters.may_hit(&ray) {
+        return None;
+    }
     let mut chain = 0;
     loop {
         let hit = view.world.intersect(&ray, 0.0, f64::INFINITY)?;

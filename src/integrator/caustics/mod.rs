@@ -47,6 +47,7 @@ use crate::scene::model::Scene;
 use crate::world::{World, WorldHit};
 
 use super::SceneView;
+use super::casters::specular_primitives;
 
 pub use connect::{camera_edge, connect, edge_density};
 pub use light_path::{CausticVertex, crosses_nonreciprocal, trace};
@@ -57,17 +58,7 @@ pub use light_path::{CausticVertex, crosses_nonreciprocal, trace};
 /// [`Emitters::restrict_light_paths`], which this calls with the centre of
 /// the bounded mirror and glass objects, or the camera).
 pub fn prepare(scene: &Scene, world: &World, emitters: &mut Emitters) -> bool {
-    let is_specular = |material: usize| {
-        scene
-            .materials
-            .get(material)
-            .is_some_and(|m| m.has_delta_lobe())
-    };
-    let casters: Vec<_> = world
-        .primitives()
-        .iter()
-        .filter(|primitive| primitive.materials().any(is_specular))
-        .collect();
+    let casters: Vec<_> = specular_primitives(scene, world).collect();
     if casters.is_empty() || emitters.is_empty() {
         return false;
     }

@@ -1,0 +1,117 @@
+//! A material's lobes and what does not depend on the hit (see the
+//! module above): made once per material before rendering.
+
+use arrayvec::ArrayVec;
+
+use super::{Lobe, MAX_LOBES};
+use crate::scene::model::ConductorFresnel;
+use crate::spectral::Dispersion;
+
+/// The lobes of a material and what does not depend on the hit: their
+/// weights, which of them take the hit's colour as their tint, and (when no
+/// lobe's choice depends on the hit) their probabilities.
+#[derive(Clone, Debug, Default)]
+pub struct LobeSet {
+    pub(super) lobes: ArrayVec<Lobe, MAX_LOBES>,
+    pub(super) weights: [f64; MAX_LOBES],
+    /// Whether the lobe's tint is the hit's colour (else it keeps its own).
+    pub(super) tinted: [bool; MAX_LOBES],
+    /// Whether a dielectric takes the rendering's Fresnel term (cav's glass
+    /// keeps none).
+    pub(super) follows_rules: [bool; MAX_LOBES],
+    /// Probabilities, when they do not depend on the hit (every lobe tinted
+    /// by the hit's colour, none with a Schlick term, no angular weights).
+    pub(super) fixed: bool,
+    pub(super) fixed_probabilities: [f64; MAX_LOBES],
+    /// The probability of the continuous lobes, when fixed.
+    pub(super) fixed_smooth: f64,
+    /// cav's weights of lobes 0, 1, 2 (diffuse, conductor, dielectric).
+    pub(super) angular: Option<crate::scene::model::AngularWeights>,
+    pub(super) ior: f64,
+    /// The dispersion of its dielectric lobe (none without one).
+    pub(super) dispersion: Option<Dispersion>,
+    pub(super) smooth_lobes: usize,
+    pub(super) only_lambert: bool,
+    /// One Lambert lobe tinted by the hit's colour, nothing else.
+    pub(super) single_lambert: bool,
+    pub(super) reads_choice: bool,
+    pub(super) reads_direction: bool,
+}
+
+impl LobeSet {
+    /// Adds `lobe` with `weight`; `tinted`: its tint becomes the hit's
+    /// colour. Lobes beyond [`MAX_LOBES`] and non-positive weights are
+    /// dropped. A dielectric is given as seen from outside.
+    pub fn push(&mut self, lobe: Lobe, weight: f64, tinted: bool) {
+        self.push_slot(lobe, weight, tinted, true);
+    }
+
+    pub(super) fn push_slot(&mut self, lobe: Lobe, weight: f64, tinted: bool, follows_rules: bool) {
+        let usable = weight > 0.0 && weight.is_finite() || self.angular.is_some();
+        if self.lobes.len() == MAX_LOBES || !usable {
+            return;
+        }
+        let i = self.lobes.len();
+        let delta = lobe.is_delta();
+        self.reads_choice |= i > 0 || lobe.reads_choice();
+        self.reads_direction |= !delta;
+        if !delta {
+            self.smooth_lobes += 1;
+        }
+        if i == 0 {
+            self.only_lambert = true;
+        }
+        self.only_lambert &= delta || matches!(lobe, Lobe::Lambert(_));
+        self.weights[i] = weight;
+        self.tinted[i] = tinted;
+        self.follows_rules[i] = follows_rules;
+        self.lobes.push(lobe);
+        self.single_lambert = self.lobes.len() == 1
+            && self.tinted[0]
+            && self.angular.is_none()
+            && matches!(self.lobes[0], Lobe::Lambert(_));
+        self.fix_probabilities();
+    }
+
+    /// The probabilities when they do not depend on the hit.
+    fn fix_probabilities(&mut self) {
+        let fixed = self.angular.is_none()
+            && self.lobes.iter().zip(&self.tinted).all(|(lobe, &tinted)| {
+                tinted
+                    && !matches!(lobe, Lobe::Conductor(c) if c.fresnel == ConductorFresnel::Schlick)
+            });
+        self.fixed = fixed;
+        let total: f64 = self.weights[..self.lobes.len()].iter().sum();
+        self.fixed_smooth = 0.0;
+        for i in 0..self.lobes.len() {
+            self.fixed_probabilities[i] = if fixed { self.weights[i] / total } else { 0.0 };
+            if !self.lobes[i].is_delta() {
+                self.fixed_smooth += self.fixed_probabilities[i];
+            }
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.lobes.len()
+    }
+
+    /// The same lobes with dielectrics of index `ior` inside (the index of
+    /// the material's dispersion at a path's wavelength); no allocation.
+    pub fn with_ior(&self, ior: f64) -> LobeSet {
+        let mut set = self.clone();
+        set.ior = ior;
+        for lobe in &mut set.lobes {
+            lobe.set_ior(ior);
+        }
+        set
+    }
+
+    /// Whether a lobe is a delta lobe (a mirror or smooth glass).
+    pub fn has_delta(&self) -> bool {
+        self.smooth_lobes < self.lobes.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.lobes.is_empty()
+    }
+}
