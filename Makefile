@@ -105,7 +105,7 @@ gallery: build
 	$(VENV)/bin/pip install -q numpy pillow
 	$(VENV)/bin/python scripts/gallery.py
 
-# Coverage-guided fuzzing with cargo-fuzz (README, "Fuzzing"; needs
+# Coverage-guided fuzzing with cargo-fuzz (docs/guide/development.md, "Fuzzing"; needs
 # `cargo install cargo-fuzz` and a nightly toolchain): each target of
 # fuzz/fuzz_targets runs FUZZ_SECONDS (scene_text SCENE_TEXT_SECONDS) in
 # turn, one libFuzzer job that keeps going past crashes, timeouts and OOMs

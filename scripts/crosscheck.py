@@ -207,9 +207,9 @@ MATERIAL_FIELDS = {"color": 3, "diffuseColor": 3, "emission": 3, "diffusionRate"
                    "specularColor": 3, "shininess": 1, "roughness": 1,
                    # Cambrian (cam) dialect: `type DIFF|SPEC|REFR`, IOR `refractive_rate`
                    "type": "word", "refractive_rate": 1, "texture_file": "word",
-                   # participating media (README "Participating media")
+                   # participating media (docs/guide/dispersion-and-media.md)
                    "interface": 0,
-                   # dispersion (README "Dispersion"): Mitsuba's dielectric takes
+                   # dispersion (docs/guide/dispersion-and-media.md): Mitsuba's dielectric takes
                    # one index, `ior` (crosscheck_dispersion.py sets it per render)
                    "cauchy": 2}
 MEDIUM_FIELDS = {"sigmaA": 3, "sigma_a": 3, "sigmaS": 3, "sigma_s": 3, "g": 1}

@@ -21,7 +21,7 @@ use crate::render::{RenderStats, Renderer, Samples, Stop, Stopped};
 use crate::render_job::{JobHeader, first_difference};
 
 /// Seconds between checkpoints by default. Writing the film of a 1024x768
-/// render takes a fraction of a second (see the README), a small part of
+/// render takes a fraction of a second (the render summary prints it), a small part of
 /// this interval; a render killed loses at most this much work.
 pub const CHECKPOINT_SECONDS: f64 = 60.0;
 

@@ -1,4 +1,4 @@
-//! The renderer's limits on input size and work, in one place (README, "Limits").
+//! The renderer's limits on input size and work, in one place (docs/guide/limits.md).
 //!
 //! Each limit keeps a hostile or careless input from exhausting memory or time:
 //! beyond it the input is refused with a located error before any large

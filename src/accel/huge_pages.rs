@@ -3,7 +3,7 @@
 //! transparent huge pages, so that one TLB entry covers 2 MiB instead of
 //! 4 KiB. Systems whose huge pages are set to `madvise`
 //! (`/sys/kernel/mm/transparent_hugepage/enabled`, as on the machine of the
-//! README's figures) give them only to memory that asks; a query through a
+//! figures of docs/guide/performance.md) give them only to memory that asks; a query through a
 //! large mesh otherwise pays a page walk on most node and triangle reads.
 //!
 //! Small arrays, other systems and a failed mapping use a plain `Vec`: the

@@ -23,7 +23,7 @@ use crate::limits::{MAX_FILE_NAME_BYTES, MAX_SYMLINK_HOPS};
 /// Distinguishes the temporary files of one process.
 static NEXT_TEMPORARY: AtomicU64 = AtomicU64::new(0);
 
-/// What every temporary name holds: the pattern the README gives for leftovers.
+/// What every temporary name holds: the pattern docs/guide/limits.md gives for leftovers.
 pub const TEMPORARY_MARK: &str = ".pathtracer-tmp-";
 
 /// An output whose temporary file exists, to be written and then committed.
