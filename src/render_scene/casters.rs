@@ -8,6 +8,7 @@
 //! image is the same, with fewer world queries.
 
 use crate::geometry::Shape;
+use crate::lights::Emitters;
 use crate::math::{Aabb, Point3, Ray, Vec3};
 use crate::scene::model::Scene;
 use crate::world::{Primitive, World};
@@ -39,7 +40,7 @@ impl Default for Casters {
 }
 
 impl Casters {
-    /// The casters of `world` (see [`specular_primitives`]).
+    /// The casters of `world`: its primitives with a mirror or smooth glass.
     pub fn of(scene: &Scene, world: &World) -> Casters {
         let mut casters = Casters {
             balls: Vec::new(),
@@ -96,9 +97,32 @@ impl Casters {
     }
 }
 
+/// Whether light subpaths can add anything to a scene: it needs mirror or
+/// glass to go through and emitters small enough, as seen from the mirrors
+/// and glass, for the path tracer to miss them (see
+/// [`Emitters::restrict_light_paths`], which this calls with the centre of
+/// the bounded mirror and glass objects, or the camera).
+pub fn prepare_light_paths(scene: &Scene, world: &World, emitters: &mut Emitters) -> bool {
+    let casters: Vec<_> = specular_primitives(scene, world).collect();
+    if casters.is_empty() || emitters.is_empty() {
+        return false;
+    }
+    let bounds = casters
+        .iter()
+        .filter_map(|primitive| primitive.bounds())
+        .filter(Aabb::is_valid)
+        .fold(Aabb::empty(), |acc, b| acc.union(&b));
+    let reference = if bounds.is_empty() {
+        scene.camera.center
+    } else {
+        bounds.centroid()
+    };
+    emitters.restrict_light_paths(&reference)
+}
+
 /// The primitives of `world` with a material that has a delta lobe (a
 /// mirror or smooth glass): the casters of caustics.
-pub fn specular_primitives<'w>(
+fn specular_primitives<'w>(
     scene: &'w Scene,
     world: &'w World,
 ) -> impl Iterator<Item = &'w Primitive> + 'w {
