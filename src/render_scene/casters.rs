@@ -144,6 +144,8 @@ fn around(bounds: &Aabb) -> (Point3, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::look::Look;
+    use crate::render_scene::{RenderScene, SceneSettings};
     use crate::rng::Rng;
     use crate::scene::model::{Material, Object};
 
@@ -189,8 +191,12 @@ mod tests {
     #[test]
     fn a_ray_that_finds_a_caster_may_hit_one() {
         let scene = scene();
-        let world = World::build(&scene);
-        let casters = Casters::of(&scene, &world);
+        let built = RenderScene::build(
+            scene.clone(),
+            &SceneSettings::defaults(&scene, Look::ORIGINAL),
+        );
+        let world = built.world();
+        let casters = Casters::of(&scene, world);
         assert!(!casters.anywhere);
         assert_eq!((casters.balls.len(), casters.planes.len()), (2, 1));
         let mut rng = Rng::new(9, 10);

@@ -147,7 +147,7 @@ impl RenderScene {
         }
         let look = settings.look;
         adapt(&mut scene, &look);
-        let world = World::build_with(&scene, look.shape_rules());
+        let world = World::build(&scene, look.shape_rules());
         let camera = Camera::new(
             &look.camera(&scene.camera),
             settings.width.max(1),

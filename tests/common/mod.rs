@@ -132,6 +132,12 @@ pub fn built(scene: Scene) -> RenderScene {
     RenderScene::build(scene, &settings)
 }
 
+/// The render-time scene of `objects` alone, without materials (so that
+/// every hit has its uv and surface derivatives): for tests of geometry.
+pub fn world_of(objects: Vec<Object>) -> RenderScene {
+    built(Scene::new(Vec::new(), Object::Group(objects)))
+}
+
 /// `scene` rendered with `settings`.
 pub fn render_scene(
     scene: &Scene,
