@@ -12,8 +12,10 @@ mod common;
 use common::{incoherent_rays, load_obj};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use pathtracer::integrator::Integrator;
+use pathtracer::look::Look;
 use pathtracer::math::{Ray, Vec3};
 use pathtracer::render::{RenderSettings, render};
+use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{CurveKind, Material, Object, Profile, Scene};
 use pathtracer::scene::{LoadOptions, load_scene};
@@ -33,6 +35,12 @@ fn shared(relative: &str) -> Option<PathBuf> {
 
 fn scene_with(root: Object) -> Scene {
     Scene::new(vec![Material::default()], root)
+}
+
+/// The render-time scene of `scene` in the original look.
+fn built(scene: Scene) -> RenderScene {
+    let settings = SceneSettings::defaults(&scene, Look::ORIGINAL);
+    RenderScene::build(scene, &settings)
 }
 
 /// Closest hits of the incoherent ray set through `world`.
@@ -72,11 +80,11 @@ fn dragon(c: &mut Criterion) {
     let mut group = c.benchmark_group("bvh_build");
     group.sample_size(10);
     group.measurement_time(Duration::from_secs(20));
-    group.bench_function("dragon_871k", |b| b.iter(|| World::build(&scene)));
+    group.bench_function("dragon_871k", |b| b.iter(|| built(scene.clone())));
     group.finish();
-    let world = World::build(&scene);
-    bench_rays(c, "dragon_871k_incoherent", &world);
-    bench_any_hit(c, "dragon_871k_incoherent_any", &world);
+    let dragon = built(scene);
+    bench_rays(c, "dragon_871k_incoherent", dragon.world());
+    bench_any_hit(c, "dragon_871k_incoherent_any", dragon.world());
 }
 
 fn primitives(c: &mut Criterion) {
@@ -86,7 +94,7 @@ fn primitives(c: &mut Criterion) {
         motion: Vec3::zeros(),
         material: 0,
     });
-    bench_rays(c, "sphere", &World::build(&sphere));
+    bench_rays(c, "sphere", built(sphere).world());
     let vase = scene_with(Object::Revolution {
         profile: Profile {
             kind: CurveKind::Bezier,
@@ -102,7 +110,7 @@ fn primitives(c: &mut Criterion) {
         },
         material: 0,
     });
-    bench_rays(c, "revolution_bezier_vase", &World::build(&vase));
+    bench_rays(c, "revolution_bezier_vase", built(vase).world());
 }
 
 fn renders(c: &mut Criterion) {
@@ -132,7 +140,9 @@ fn renders(c: &mut Criterion) {
     group.measurement_time(Duration::from_secs(20));
     for (name, path) in scenes {
         let scene = load_scene(&path, &LoadOptions::default()).expect("bench scene loads");
-        let world = World::build(&scene);
+        let mut scene_settings = SceneSettings::defaults(&scene, Look::ORIGINAL);
+        (scene_settings.width, scene_settings.height) = (128, 96);
+        let scene = RenderScene::build(scene, &scene_settings);
         for integrator in Integrator::ALL {
             let settings = RenderSettings {
                 width: 128,
@@ -148,12 +158,13 @@ fn renders(c: &mut Criterion) {
                 clamp: None,
                 light_paths: true,
                 look: Default::default(),
+                dispersion: None,
             };
             let samples = settings.width as u64 * settings.height as u64 * settings.spp as u64;
             group.throughput(Throughput::Elements(samples));
             let id = BenchmarkId::new(name, integrator.name());
             group.bench_with_input(id, &settings, |b, s| {
-                b.iter(|| render(&scene, &world, s).expect("renders"))
+                b.iter(|| render(&scene, s).expect("renders"))
             });
         }
     }

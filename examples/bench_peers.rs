@@ -20,9 +20,10 @@ use obvhs::BvhBuildParams;
 use obvhs::cwbvh::builder::build_cwbvh_from_tris;
 use obvhs::ray::RayHit;
 use obvhs::triangle::Triangle;
+use pathtracer::look::Look;
 use pathtracer::math::Ray;
+use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::scene::model::{Material, MeshData, Object, Scene};
-use pathtracer::world::World;
 
 /// One renderer's answer to the two queries over a ray set.
 trait Tracer {
@@ -32,7 +33,7 @@ trait Tracer {
     fn any(&self, rays: &[Ray]) -> usize;
 }
 
-struct Ours(World);
+struct Ours(RenderScene);
 
 impl Tracer for Ours {
     fn name(&self) -> &'static str {
@@ -40,12 +41,12 @@ impl Tracer for Ours {
     }
     fn closest(&self, rays: &[Ray]) -> usize {
         rays.iter()
-            .filter(|r| self.0.intersect(r, 0.0, f64::INFINITY).is_some())
+            .filter(|r| self.0.world().intersect(r, 0.0, f64::INFINITY).is_some())
             .count()
     }
     fn any(&self, rays: &[Ray]) -> usize {
         rays.iter()
-            .filter(|r| self.0.occluded(r, 0.0, f64::INFINITY))
+            .filter(|r| self.0.world().occluded(r, 0.0, f64::INFINITY))
             .count()
     }
 }
@@ -227,7 +228,8 @@ fn main() {
         },
     );
     let start = Instant::now();
-    let ours = Ours(World::build(&scene));
+    let settings = SceneSettings::defaults(&scene, Look::ORIGINAL);
+    let ours = Ours(RenderScene::build(scene, &settings));
     let mut builds = vec![start.elapsed().as_secs_f64()];
     let start = Instant::now();
     let obvhs = Obvhs::build(&mesh);
@@ -238,7 +240,7 @@ fn main() {
     let embree = Embree(embree_scene.commit());
     builds.push(start.elapsed().as_secs_f64());
 
-    let rays = incoherent_rays(&ours.0, count);
+    let rays = incoherent_rays(ours.0.world(), count);
     let tracers: [&dyn Tracer; 3] = [&ours, &obvhs, &embree];
     let mut rates: Vec<Rates> = tracers.iter().map(|_| Rates::default()).collect();
     for _ in 0..rounds {

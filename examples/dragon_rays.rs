@@ -15,8 +15,9 @@ use std::time::Instant;
 
 use common::{incoherent_rays, load_obj, thread_cpu_seconds};
 
+use pathtracer::look::Look;
+use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::scene::model::{Material, Object, Scene};
-use pathtracer::world::World;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -38,12 +39,14 @@ fn main() {
         },
     );
     let start = Instant::now();
-    let world = World::build(&scene);
+    let settings = SceneSettings::defaults(&scene, Look::ORIGINAL);
+    let scene = RenderScene::build(scene, &settings);
+    let world = scene.world();
     println!("build: {:.3} s", start.elapsed().as_secs_f64());
     if mode == "build" {
         return;
     }
-    let rays = incoherent_rays(&world, count);
+    let rays = incoherent_rays(world, count);
     let (mut closest, mut any) = (Vec::new(), Vec::new());
     for _ in 0..rounds {
         if mode != "any" {

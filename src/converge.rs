@@ -10,8 +10,7 @@ use crate::metrics::compare;
 use std::time::Instant;
 
 use crate::render::{Progress, RenderSettings, Renderer, Samples, Stop};
-use crate::scene::model::Scene;
-use crate::world::World;
+use crate::render_scene::RenderScene;
 
 /// One stage of a convergence run.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -28,8 +27,7 @@ pub struct ConvergencePoint {
 /// continues the previous one) and compares every stage with `reference`;
 /// `max_spp` 0 is an error (no stage, no curve).
 pub fn converge(
-    scene: &Scene,
-    world: &World,
+    scene: &RenderScene,
     settings: &RenderSettings,
     reference: &Image,
     max_spp: u32,
@@ -37,7 +35,6 @@ pub fn converge(
 ) -> Result<Vec<ConvergencePoint>, String> {
     converge_within(
         scene,
-        world,
         settings,
         reference,
         max_spp,
@@ -48,8 +45,7 @@ pub fn converge(
 
 /// [`converge`], once the image's size is checked against `budget`.
 pub fn converge_within(
-    scene: &Scene,
-    world: &World,
+    scene: &RenderScene,
     settings: &RenderSettings,
     reference: &Image,
     max_spp: u32,
@@ -65,13 +61,12 @@ pub fn converge_within(
         budget,
     )?;
     let mut points = Vec::new();
-    // One renderer for every stage; the time to build it (the emitter
-    // table, the worker threads) counts in the first point.
+    // One renderer for every stage; the time to start it (the worker
+    // threads) counts in the first point.
     let built = Instant::now();
     let pixels = (film.width * film.height) as u64;
     let renderer = Renderer::new(
         scene,
-        world,
         settings,
         Progress::new(pixels * max_spp as u64, None),
     )?;

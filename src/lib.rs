@@ -2,9 +2,10 @@
 //! computer-graphics course (the "PA" grammar and its coursework dialects).
 //!
 //! Data flows one way:
-//! scene text -> syntax tree -> built [`scene::model::Scene`] -> [`world::World`]
-//! -> [`camera::Camera`] rays -> [`integrator`] samples -> [`film`] ->
-//! [`image_io`] file. [`render::render`] is the only parallel code;
+//! scene text -> syntax tree -> built [`scene::model::Scene`] ->
+//! [`render_scene::RenderScene`] (built once by `RenderScene::build`: the
+//! world, render materials, emitters, camera) -> camera rays ->
+//! [`integrator`] samples -> [`film`] -> [`image_io`] file. [`render::render`] is the only parallel code;
 //! [`metrics`] compares images (RMSE, relative MSE, PSNR, SSIM, FLIP, the
 //! look-alike criterion); [`pairs`] measures our renders of reference pairs.
 
@@ -34,6 +35,7 @@ pub mod plot;
 pub mod progress;
 pub mod render;
 pub mod render_job;
+pub mod render_scene;
 pub mod rng;
 pub mod sampler;
 pub mod sampling;

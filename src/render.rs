@@ -8,18 +8,17 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
-use crate::camera::Camera;
 use crate::film::{Film, PixelSum, SplatSums};
 use crate::image_io::Image;
-use crate::integrator::{CameraSample, Integrator, SceneView, Splats};
+use crate::integrator::{CameraSample, Integrator, Splats};
 use crate::interrupt;
 use crate::limits::MemoryBudget;
 use crate::look::{Look, PixelSampling};
 pub use crate::progress::{PROGRESS_LOG_SECONDS, Progress};
+use crate::render_scene::{RenderScene, SceneSettings};
 use crate::sampler::{Sampler, SamplerKind};
-use crate::scene::model::{Object, Scene};
+use crate::spectral::Dispersion;
 use crate::subpixel::film_position;
-use crate::world::World;
 
 #[derive(Clone, Debug)]
 pub struct RenderSettings {
@@ -50,6 +49,24 @@ pub struct RenderSettings {
     pub light_paths: bool,
     /// The conventions of the rendering.
     pub look: Look,
+    /// Indices per RGB channel for every refractive material
+    /// (`--dispersion`; `None`: the scene's own).
+    pub dispersion: Option<Dispersion>,
+}
+
+impl RenderSettings {
+    /// The settings that decide the render-time scene (see
+    /// [`RenderScene::build`]).
+    pub fn scene(&self) -> SceneSettings {
+        SceneSettings {
+            look: self.look,
+            width: self.width,
+            height: self.height,
+            max_depth: self.max_depth,
+            light_paths: self.light_paths,
+            dispersion: self.dispersion,
+        }
+    }
 }
 
 /// What a render did.
@@ -82,21 +99,18 @@ impl RenderStats {
     }
 }
 
-/// Renders `scene` (whose geometry is `world`) into a linear image, within
-/// the default memory budget.
+/// Renders `scene` into a linear image, within the default memory budget.
 pub fn render(
-    scene: &Scene,
-    world: &World,
+    scene: &RenderScene,
     settings: &RenderSettings,
 ) -> Result<(Image, RenderStats), String> {
-    render_within(scene, world, settings, MemoryBudget::default())
+    render_within(scene, settings, MemoryBudget::default())
 }
 
 /// [`render`], once the image's size is checked against `budget` (before
 /// the film is allocated).
 pub fn render_within(
-    scene: &Scene,
-    world: &World,
+    scene: &RenderScene,
     settings: &RenderSettings,
     budget: MemoryBudget,
 ) -> Result<(Image, RenderStats), String> {
@@ -105,7 +119,7 @@ pub fn render_within(
         settings.height.max(1) as usize,
         budget,
     )?;
-    let stats = render_into(scene, world, settings, &mut film, 0..settings.spp)?;
+    let stats = render_into(scene, settings, &mut film, 0..settings.spp)?;
     Ok((film.to_image(), stats))
 }
 
@@ -114,15 +128,14 @@ pub fn render_within(
 /// Sample `i` of a pixel is the same whichever call renders it, so
 /// rendering 0..4 and then 4..8 gives the image of rendering 0..8.
 pub fn render_into(
-    scene: &Scene,
-    world: &World,
+    scene: &RenderScene,
     settings: &RenderSettings,
     film: &mut Film,
     samples: Range<u32>,
 ) -> Result<RenderStats, String> {
     let samples = Samples::Range(samples);
     let progress = Progress::new(samples.count(film), None);
-    let renderer = Renderer::new(scene, world, settings, progress)?;
+    let renderer = Renderer::new(scene, settings, progress)?;
     renderer.render(film, &samples, Stop::Never)
 }
 
@@ -181,37 +194,32 @@ pub enum Stopped {
     Deadline,
 }
 
-/// What a render needs besides the film, built once and reused by every
-/// call of one render (adaptive passes, converge stages, the slices
-/// between checkpoints): the camera, the scene as integrators see it (the
-/// emitter table), the sampling plan, the worker threads and the progress.
+/// What a render needs besides the scene and the film, made once and
+/// reused by every call of one render (adaptive passes, converge stages,
+/// the slices between checkpoints): the worker threads and the progress.
 pub struct Renderer<'a> {
     settings: &'a RenderSettings,
-    view: SceneView<'a>,
-    camera: Camera,
-    plan: SamplingPlan,
+    scene: &'a RenderScene,
     pool: rayon::ThreadPool,
     progress: Progress,
 }
 
 impl<'a> Renderer<'a> {
-    /// A renderer of films of `settings`' size; `progress` counts the work
-    /// of all its calls.
+    /// A renderer of `scene` into films of `settings`' size; `progress`
+    /// counts the work of all its calls. `scene` must have been built for
+    /// `settings`.
     pub fn new(
-        scene: &'a Scene,
-        world: &'a World,
+        scene: &'a RenderScene,
         settings: &'a RenderSettings,
         progress: Progress,
     ) -> Result<Renderer<'a>, String> {
-        let camera = Camera::new(
-            &settings.look.camera(&scene.camera),
-            settings.width.max(1),
-            settings.height.max(1),
-        );
-        let mut view = SceneView::with_look(scene, world, settings.look);
-        view.max_depth = settings.max_depth;
-        view.camera = Some(camera.clone());
-        view.light_paths &= settings.light_paths;
+        if *scene.settings() != settings.scene() {
+            return Err(format!(
+                "the render-time scene was built for {:?}, not for {:?}",
+                scene.settings(),
+                settings.scene()
+            ));
+        }
         let mut builder = rayon::ThreadPoolBuilder::new();
         if let Some(threads) = settings.threads {
             builder = builder.num_threads(threads.max(1));
@@ -221,9 +229,7 @@ impl<'a> Renderer<'a> {
             .map_err(|e| format!("cannot start worker threads: {e}"))?;
         Ok(Renderer {
             settings,
-            view,
-            camera,
-            plan: SamplingPlan::for_scene(scene),
+            scene,
             pool,
             progress,
         })
@@ -256,7 +262,7 @@ impl<'a> Renderer<'a> {
             ));
         }
         // Light tracing's sums, only where light subpaths run.
-        let splat_sums = SplatSums::new(if self.view.light_paths {
+        let splat_sums = SplatSums::new(if self.scene.light_paths() {
             width * height
         } else {
             0
@@ -361,17 +367,14 @@ impl<'a> Renderer<'a> {
             PixelSampling::Tent => film_position(at.x, at.y, sampler.next_2d()),
             PixelSampling::Centre => (at.x as f64 + 0.5, at.y as f64 + 0.5),
         };
-        let lens = if self.plan.lens {
+        let plan = self.scene.plan();
+        let lens = if plan.lens {
             sampler.next_2d()
         } else {
             [0.5, 0.5]
         };
-        let time = if self.plan.time {
-            sampler.next_f64()
-        } else {
-            0.0
-        };
-        let ray = self.camera.ray(film_x, film_y, lens, time);
+        let time = if plan.time { sampler.next_f64() } else { 0.0 };
+        let ray = self.scene.camera().ray(film_x, film_y, lens, time);
         let sample = CameraSample {
             pixel_x: at.x,
             pixel_y: at.y,
@@ -379,7 +382,7 @@ impl<'a> Renderer<'a> {
         };
         settings
             .integrator
-            .radiance(&self.view, ray, &sample, &mut sampler, splats)
+            .radiance(self.scene, ray, &sample, &mut sampler, splats)
     }
 }
 
@@ -391,32 +394,4 @@ struct PixelSample {
     y: usize,
     pixel_index: u64,
     sample: u32,
-}
-
-/// Which sample dimensions a scene needs: a scene pays only for what it uses.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct SamplingPlan {
-    /// Lens samples (depth of field).
-    pub lens: bool,
-    /// Shutter-time samples (moving spheres).
-    pub time: bool,
-}
-
-impl SamplingPlan {
-    pub fn for_scene(scene: &Scene) -> SamplingPlan {
-        SamplingPlan {
-            lens: scene.camera.lens_radius >= crate::camera::MIN_LENS_RADIUS,
-            time: has_motion(&scene.root),
-        }
-    }
-}
-
-fn has_motion(root: &Object) -> bool {
-    let mut moving = false;
-    root.for_each_leaf(&mut |leaf| {
-        if let Object::Sphere { motion, .. } = leaf {
-            moving |= motion.norm_squared() > 0.0;
-        }
-    });
-    moving
 }

@@ -10,9 +10,9 @@ use pathtracer::film::Film;
 use pathtracer::integrator::Integrator;
 use pathtracer::math::Vec3;
 use pathtracer::render::{RenderSettings, RenderStats, Renderer, render_into};
+use pathtracer::render_scene::RenderScene;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Material, Object, Scene};
-use pathtracer::world::World;
 
 /// Left half of the view: a noiseless emissive wall (black albedo ends every
 /// path at once). Right half: a diffuse wall lit by a small emitter (noisy).
@@ -74,19 +74,19 @@ fn settings(spp: u32, threads: usize) -> RenderSettings {
         clamp: None,
         light_paths: true,
         look: Default::default(),
+        dispersion: None,
     }
 }
 
 #[test]
 fn noiseless_pixels_stop_early_and_noisy_ones_run_to_the_cap() {
-    let scene = half_and_half();
-    let world = World::build(&scene);
+    let scene = common::ready(half_and_half(), &settings(1, 1));
     let rule = StoppingRule {
         target_error: Some(1e-4),
         time_budget: None,
     };
     let mut film = Film::new(16, 8);
-    render_adaptively(&scene, &world, &settings(256, 2), rule, &mut film).unwrap();
+    render_adaptively(&scene, &settings(256, 2), rule, &mut film).unwrap();
     for row in film.pixels.chunks(16) {
         for (x, pixel) in row.iter().enumerate() {
             if x < 6 {
@@ -101,16 +101,15 @@ fn noiseless_pixels_stop_early_and_noisy_ones_run_to_the_cap() {
 
 #[test]
 fn adaptive_pixels_equal_fixed_spp_pixels_with_the_same_count() {
-    let scene = half_and_half();
-    let world = World::build(&scene);
+    let scene = common::ready(half_and_half(), &settings(1, 1));
     let rule = StoppingRule {
         target_error: Some(0.05),
         time_budget: None,
     };
     let mut adaptive = Film::new(16, 8);
-    render_adaptively(&scene, &world, &settings(128, 1), rule, &mut adaptive).unwrap();
+    render_adaptively(&scene, &settings(128, 1), rule, &mut adaptive).unwrap();
     let mut twin = Film::new(16, 8);
-    render_adaptively(&scene, &world, &settings(128, 2), rule, &mut twin).unwrap();
+    render_adaptively(&scene, &settings(128, 2), rule, &mut twin).unwrap();
     for (a, b) in adaptive.pixels.iter().zip(&twin.pixels) {
         assert_eq!(a.samples, b.samples);
         assert_eq!(a.sum, b.sum, "thread count changed an adaptive image");
@@ -118,7 +117,7 @@ fn adaptive_pixels_equal_fixed_spp_pixels_with_the_same_count() {
     // Each pixel's value is the fixed-spp value of its own sample count.
     for spp in [16, 32, 64, 128] {
         let mut fixed = Film::new(16, 8);
-        render_into(&scene, &world, &settings(spp, 2), &mut fixed, 0..spp).unwrap();
+        render_into(&scene, &settings(spp, 2), &mut fixed, 0..spp).unwrap();
         for (a, f) in adaptive.pixels.iter().zip(&fixed.pixels) {
             if a.samples == spp {
                 assert_eq!(a.sum, f.sum);
@@ -129,26 +128,24 @@ fn adaptive_pixels_equal_fixed_spp_pixels_with_the_same_count() {
 
 #[test]
 fn an_exhausted_time_budget_stops_after_the_first_pass() {
-    let scene = half_and_half();
-    let world = World::build(&scene);
+    let scene = common::ready(half_and_half(), &settings(1, 1));
     let rule = StoppingRule {
         target_error: None,
         time_budget: Some(0.0),
     };
     let mut film = Film::new(16, 8);
-    let stats = render_adaptively(&scene, &world, &settings(1024, 2), rule, &mut film).unwrap();
+    let stats = render_adaptively(&scene, &settings(1024, 2), rule, &mut film).unwrap();
     assert_eq!(stats.samples, 16 * 8 * MIN_SAMPLES as u64);
 }
 
 /// An adaptive render with a renderer of its own.
 fn render_adaptively(
-    scene: &Scene,
-    world: &World,
+    scene: &RenderScene,
     settings: &RenderSettings,
     rule: StoppingRule,
     film: &mut Film,
 ) -> Result<RenderStats, String> {
     let progress = progress_for(film, settings.spp, rule);
-    let renderer = Renderer::new(scene, world, settings, progress)?;
+    let renderer = Renderer::new(scene, settings, progress)?;
     pathtracer::adaptive::render_adaptive(&renderer, rule, film)
 }

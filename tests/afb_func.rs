@@ -3,6 +3,8 @@
 //! of revolution and five times the ray distance), truncated, wrapped by a
 //! double modulo, rows counted from the top of the file.
 
+mod common;
+
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
@@ -11,9 +13,7 @@ use pathtracer::image_io::{Image, write_image};
 use pathtracer::math::{Point3, Ray, Vec3};
 use pathtracer::scene::model::Scene;
 use pathtracer::scene::{LoadOptions, load_scene};
-use pathtracer::shading::Shading;
 use pathtracer::uv_rule::UvRule;
-use pathtracer::world::World;
 
 const SIZE: usize = 4;
 
@@ -56,9 +56,9 @@ fn afb_material(func: i64) -> String {
 
 /// The colour and hit of the first surface along `ray`.
 fn shade(scene: &Scene, ray: &Ray) -> (Color, Point3, f64) {
-    let world = World::build(scene);
-    let hit = world.intersect(ray, 0.0, f64::INFINITY).expect("hit");
-    (Shading::new(scene, &hit, ray).color, hit.point, hit.t)
+    let scene = common::built(scene.clone());
+    let hit = scene.intersect(ray).expect("hit");
+    (scene.shade(&hit, ray).color, hit.point, hit.t)
 }
 
 /// afb's index: trunc(c * size), then ((i % size) + size) % size.

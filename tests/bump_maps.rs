@@ -13,9 +13,7 @@ use pathtracer::color::Color;
 use pathtracer::math::{Point3, Ray, Vec3, orthonormal_basis};
 use pathtracer::scene::LoadOptions;
 use pathtracer::scene::model::{Bump, Material, MeshData, Object, Scene};
-use pathtracer::shading::Shading;
 use pathtracer::texture::Texture;
-use pathtracer::world::World;
 
 /// A `width` x 4 height map whose grey value rises by `step` per column.
 fn ramp(width: usize, step: f32) -> Texture {
@@ -49,12 +47,12 @@ fn bumped_scene(root: Object, map: Texture, scale: f64) -> Scene {
 
 /// The shading normal where `ray` hits, with and without the bump map.
 fn normals(scene: &Scene, ray: &Ray) -> (Vec3, Vec3) {
-    let world = World::build(scene);
-    let hit = world.intersect(ray, 0.0, f64::INFINITY).expect("hit");
-    let bumped = Shading::new(scene, &hit, ray).normal;
+    let ready = built(scene.clone());
+    let hit = ready.intersect(ray).expect("hit");
+    let bumped = ready.shade(&hit, ray).normal;
     let mut flat = scene.clone();
     flat.materials[0].bump = None;
-    let plain = Shading::new(&flat, &hit, ray).normal;
+    let plain = built(flat).shade(&hit, ray).normal;
     (bumped, plain)
 }
 
@@ -84,8 +82,7 @@ fn height_ramp_on_a_plane_tilts_by_its_slope() {
             -Vec3::new(0.2, 3.0, 0.1),
             0.0,
         );
-        let world = World::build(&scene);
-        let hit = world.intersect(&ray, 0.0, f64::INFINITY).expect("hit");
+        let hit = built(scene.clone()).intersect(&ray).expect("hit");
         // Away from the wrap-around of the ramp (texel 63 next to texel 0).
         let column = hit.uv[0].floor().rem_euclid(64.0);
         if !(1.0..=62.0).contains(&column) {

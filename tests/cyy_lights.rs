@@ -4,14 +4,15 @@
 //! that falls off as `max(0, cos)^shininess` about its `direction`, added
 //! by shadow rays like the PA1 lights, next to the area lights.
 
+mod common;
+
 use pathtracer::color::Color;
 use pathtracer::integrator::Integrator;
 use pathtracer::look::Look;
-use pathtracer::render::{RenderSettings, render};
+use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Dialect, Scene};
 use pathtracer::scene::{LoadOptions, load_scene};
-use pathtracer::world::World;
 
 fn load(name: &str, text: &str, dialect: Option<Dialect>) -> Scene {
     let dir = std::env::temp_dir().join(format!("pt-cyy-{}-{name}", std::process::id()));
@@ -40,21 +41,21 @@ fn settings(size: u32, spp: u32, integrator: Integrator) -> RenderSettings {
         clamp: None,
         light_paths: true,
         look: Default::default(),
+        dispersion: None,
     }
 }
 
 /// The scene rendered in the look detected for it, as `render` does.
 fn pixels(scene: &Scene, settings: &RenderSettings) -> Vec<Color> {
-    let world = World::build(scene);
     let settings = RenderSettings {
         look: Look::detect(scene).0,
         ..settings.clone()
     };
-    pixels_in_its_look(scene, &world, &settings)
+    pixels_in_its_look(scene, &settings)
 }
 
-fn pixels_in_its_look(scene: &Scene, world: &World, settings: &RenderSettings) -> Vec<Color> {
-    let (image, stats) = render(scene, world, settings).expect("renders");
+fn pixels_in_its_look(scene: &Scene, settings: &RenderSettings) -> Vec<Color> {
+    let (image, stats) = common::render_scene(scene, settings).expect("renders");
     assert_eq!(stats.dropped, 0);
     image.pixels
 }
@@ -127,7 +128,6 @@ fn a_spot_light_lights_its_cone_next_to_cyys_area_lights() {
         look: Look::ORIGINAL,
         ..settings.clone()
     };
-    let world = World::build(&with_spot);
-    let in_original = pixels_in_its_look(&with_spot, &world, &original);
+    let in_original = pixels_in_its_look(&with_spot, &original);
     assert!((centre(&in_original) - centre(&unlit)).abs() < 1e-12);
 }

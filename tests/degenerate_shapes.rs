@@ -4,15 +4,16 @@
 //! Each is now left out with a warning at its block (a mesh's counted in
 //! one warning per file), and an image with them, as lights, has no NaN.
 
+mod common;
+
 use std::path::Path;
 
 use pathtracer::integrator::Integrator;
 use pathtracer::look::Look;
-use pathtracer::render::{RenderSettings, render};
+use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::Scene;
 use pathtracer::scene::{LoadOptions, build, parse};
-use pathtracer::world::World;
 
 /// A camera, a diffuse floor and an emitting material 1 for the shapes.
 const HEAD: &str = "PerspectiveCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 angle 40 \
@@ -33,7 +34,6 @@ fn leaves(scene: &Scene) -> usize {
 
 /// Every pixel of a tiny render is finite and no sample was dropped.
 fn assert_renders_finite(scene: &Scene) {
-    let world = World::build(scene);
     let settings = RenderSettings {
         width: 8,
         height: 8,
@@ -48,8 +48,9 @@ fn assert_renders_finite(scene: &Scene) {
         clamp: None,
         light_paths: true,
         look: Look::detect(scene).0,
+        dispersion: None,
     };
-    let (image, stats) = render(scene, &world, &settings).expect("renders");
+    let (image, stats) = common::render_scene(scene, &settings).expect("renders");
     assert_eq!(stats.dropped, 0);
     assert!(
         image

@@ -4,14 +4,14 @@
 
 use pathtracer::bsdf::{Bsdf, DielectricFresnel, GlassChoice, LobeSet, Rules};
 use pathtracer::color::Color;
-use pathtracer::integrator::{CameraSample, Integrator, SceneView, Splats};
+use pathtracer::integrator::{CameraSample, Integrator, Splats};
 use pathtracer::look::Look;
 use pathtracer::math::{Ray, Vec3};
+use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::rng::Rng;
 use pathtracer::sampler::Sampler;
 use pathtracer::scene::model::{Material, Object, Scene};
 use pathtracer::spectral::{Dispersion, LAMBDA_MAX, LAMBDA_MIN, PathSpectrum};
-use pathtracer::world::World;
 
 const RULES: Rules = Rules {
     fresnel: DielectricFresnel::Exact,
@@ -140,11 +140,13 @@ fn glass_scene(glass: Material, wall: Color) -> Scene {
 /// aimed at random points of the ball, with its standard error; and the
 /// radiances themselves.
 fn radiance_samples(scene: &Scene, paths: u64) -> ([(f64, f64); 3], Vec<Color>) {
-    let world = World::build(scene);
-    let mut view = SceneView::with_look(scene, &world, Look::PHYSICAL);
     // Both kinds of scene by the same estimator (light subpaths are off
     // in dispersive scenes).
-    view.light_paths = false;
+    let settings = SceneSettings {
+        light_paths: false,
+        ..SceneSettings::defaults(scene, Look::PHYSICAL)
+    };
+    let view = RenderScene::build(scene.clone(), &settings);
     let origin = Vec3::new(0.0, 0.0, 3.0);
     let mut samples = Vec::new();
     for i in 0..paths {

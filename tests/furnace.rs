@@ -4,12 +4,11 @@
 mod common;
 
 use pathtracer::color::Color;
-use pathtracer::integrator::{CameraSample, Integrator, SceneView, Splats};
+use pathtracer::integrator::{CameraSample, Integrator, Splats};
 use pathtracer::math::{Ray, Vec3};
 use pathtracer::rng::Rng;
 use pathtracer::sampler::Sampler;
 use pathtracer::scene::model::{Material, Object};
-use pathtracer::world::World;
 
 fn furnace_mean(integrator: Integrator, material: Material, paths: u64) -> (Color, f64) {
     let root = Object::Group(vec![Object::Sphere {
@@ -18,9 +17,7 @@ fn furnace_mean(integrator: Integrator, material: Material, paths: u64) -> (Colo
         motion: Vec3::zeros(),
         material: 0,
     }]);
-    let scene = common::scene_with(vec![material], root);
-    let world = World::build(&scene);
-    let view = SceneView::new(&scene, &world);
+    let view = common::built(common::scene_with(vec![material], root));
     let mut sum = Color::BLACK;
     let mut sum_sq = 0.0;
     for i in 0..paths {

@@ -12,11 +12,11 @@ use std::time::Instant;
 use pathtracer::integrator::Integrator;
 use pathtracer::look::Look;
 use pathtracer::render::{RenderSettings, render};
+use pathtracer::render_scene::RenderScene;
 use pathtracer::rng::Rng;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::Scene;
 use pathtracer::scene::{LoadOptions, build, parse};
-use pathtracer::world::World;
 
 const MUTANTS_PER_FILE: usize = 300;
 /// Failures shown in full (the others are counted).
@@ -130,11 +130,10 @@ fn small_assets(text: &str, base: &Path) -> bool {
 
 /// Renders `scene` at 4x4 and 1 spp under its own look, with the look's
 /// integrator and with the path integrator; an error names what went wrong.
-fn render_tiny(mut scene: Scene) -> Result<(), String> {
+fn render_tiny(scene: Scene) -> Result<(), String> {
     let (look, _) = Look::detect(&scene);
-    look.adapt(&mut scene);
-    let world = World::build_with(&scene, look.shape_rules());
-    let own = look.estimator.integrator();
+    let own = look.integrator;
+    let mut built = None;
     let integrators: &[Integrator] = if own == Integrator::Path {
         &[Integrator::Path]
     } else {
@@ -155,9 +154,13 @@ fn render_tiny(mut scene: Scene) -> Result<(), String> {
             clamp: None,
             light_paths: true,
             look,
+            dispersion: None,
         };
+        // One render-time scene for both integrators.
+        let scene =
+            built.get_or_insert_with(|| RenderScene::build(scene.clone(), &settings.scene()));
         // A refusal is an answer; only panics and bad pixels are failures.
-        let Ok((image, _)) = render(&scene, &world, &settings) else {
+        let Ok((image, _)) = render(scene, &settings) else {
             continue;
         };
         if image.pixels.iter().any(|p| !p.is_finite()) {

@@ -7,11 +7,12 @@ mod common;
 use std::sync::Arc;
 
 use common::*;
+use pathtracer::geometry::Mesh;
 use pathtracer::geometry::triangle::intersect_vertices;
-use pathtracer::geometry::{Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere};
 use pathtracer::math::{Aabb, Matrix, Point3, Ray, Vec3, offset_origin};
 use pathtracer::rng::Rng;
-use pathtracer::world::{Primitive, World};
+use pathtracer::scene::model::Object;
+use pathtracer::world::World;
 
 #[test]
 fn mesh_bvh_equals_brute_force_on_reference_meshes() {
@@ -59,29 +60,28 @@ fn mesh_bvh_equals_brute_force_on_reference_meshes() {
 #[test]
 fn world_bvh_equals_linear_scan() {
     let mut rng = Rng::new(3, 5);
-    let mut primitives = Vec::new();
+    let mut objects = Vec::new();
     for i in 0..300 {
         let center = Point3::new(rng.next_f64(), rng.next_f64(), rng.next_f64()) * 20.0;
-        let shape = if i % 2 == 0 {
-            Shape::Sphere(Sphere::new(center, 0.2 + rng.next_f64(), Vec3::zeros()))
+        objects.push(if i % 2 == 0 {
+            ball(center, 0.2 + rng.next_f64(), i)
         } else {
-            let v = [0, 1, 2].map(|_| center + random_unit(&mut rng) * 1.5);
-            Shape::Triangle(pathtracer::geometry::Triangle::new(v))
-        };
-        primitives.push(Primitive {
-            shape,
-            transform: None,
-            material: i,
-            face_materials: None,
+            Object::Triangle {
+                vertices: [0, 1, 2].map(|_| center + random_unit(&mut rng) * 1.5),
+                material: i,
+            }
         });
     }
-    primitives.push(Primitive {
-        shape: Shape::Plane(Plane::new(Vec3::y(), -1.0).unwrap()),
-        transform: None,
+    objects.push(Object::Plane {
+        normal: Vec3::y(),
+        offset: -1.0,
         material: 999,
-        face_materials: None,
     });
-    let world = World::from_primitives(primitives.clone());
+    let scene = world_of(objects);
+    let world = scene.world();
+    // The primitives one by one, as the world made them.
+    let primitives = world.primitives();
+    assert_eq!(primitives.len(), 301);
     let bounds = world.bounds();
     for _ in 0..3000 {
         let ray = ray_at_box(&mut rng, &bounds);
@@ -99,12 +99,7 @@ fn world_bvh_equals_linear_scan() {
 }
 
 /// Shapes under transforms of very different scales, for the self-intersection test.
-fn spawn_test_primitives() -> Vec<(String, Primitive)> {
-    let bunny = load_mesh(BUNNY_1K).map(Mesh::new).map(Arc::new);
-    let sphere = Shape::Sphere(Sphere::new(Point3::new(0.3, -0.2, 0.1), 1.0, Vec3::zeros()));
-    let revolution = Shape::Revolution(Arc::new(Revolution::new(&vase()).unwrap()));
-    let glass = Shape::Revolution(Arc::new(Revolution::new(&wine_glass()).unwrap()));
-    let plane = Shape::Plane(Plane::new(Vec3::new(0.2, 1.0, -0.3), 0.7).unwrap());
+fn spawn_test_objects() -> Vec<(String, Object)> {
     let scales: [(&str, Matrix); 5] = [
         ("identity", Matrix::identity()),
         ("scale 1e-3", Matrix::new_scaling(1e-3)),
@@ -119,30 +114,57 @@ fn spawn_test_primitives() -> Vec<(String, Primitive)> {
                 * Matrix::from_euler_angles(0.3, 0.5, 0.1),
         ),
     ];
-    let rectangle = Shape::Rectangle(
-        Rectangle::new(
-            Point3::new(-1.0, 0.2, -1.0),
-            Vec3::new(2.0, 0.1, 0.0),
-            Vec3::new(0.3, 0.0, 2.0),
-        )
-        .unwrap(),
-    );
-    let disk =
-        Shape::Disk(Disk::new(Point3::new(0.1, 0.2, 0.3), Vec3::new(1.0, 2.0, 3.0), 1.5).unwrap());
     let mut shapes = vec![
-        ("sphere", sphere),
-        ("rectangle", rectangle),
-        ("disk", disk),
-        ("plane", plane),
-        ("vase", revolution),
-        ("glass", glass),
+        ("sphere", ball(Point3::new(0.3, -0.2, 0.1), 1.0, 0)),
+        (
+            "rectangle",
+            Object::Rectangle {
+                origin: Point3::new(-1.0, 0.2, -1.0),
+                edge_u: Vec3::new(2.0, 0.1, 0.0),
+                edge_v: Vec3::new(0.3, 0.0, 2.0),
+                material: 0,
+            },
+        ),
+        (
+            "disk",
+            Object::Disk {
+                center: Point3::new(0.1, 0.2, 0.3),
+                normal: Vec3::new(1.0, 2.0, 3.0),
+                radius: 1.5,
+                material: 0,
+            },
+        ),
+        (
+            "plane",
+            Object::Plane {
+                normal: Vec3::new(0.2, 1.0, -0.3),
+                offset: 0.7,
+                material: 0,
+            },
+        ),
+        (
+            "vase",
+            Object::Revolution {
+                profile: vase(),
+                material: 0,
+            },
+        ),
+        (
+            "glass",
+            Object::Revolution {
+                profile: wine_glass(),
+                material: 0,
+            },
+        ),
     ];
-    if let Some(mesh) = bunny {
+    if let Some(mesh) = load_mesh(BUNNY_1K) {
         shapes.push((
             "bunny",
-            Shape::Mesh {
+            Object::Mesh {
                 mesh,
                 smooth: false,
+                material: 0,
+                face_materials: None,
             },
         ));
     }
@@ -151,12 +173,7 @@ fn spawn_test_primitives() -> Vec<(String, Primitive)> {
         for (label, matrix) in &scales {
             out.push((
                 format!("{name}, {label}"),
-                Primitive {
-                    shape: shape.clone(),
-                    transform: transform(*matrix),
-                    material: 0,
-                    face_materials: None,
-                },
+                transformed(*matrix, shape.clone()),
             ));
         }
     }
@@ -166,10 +183,11 @@ fn spawn_test_primitives() -> Vec<(String, Primitive)> {
 #[test]
 fn spawned_rays_do_not_rehit_their_surface() {
     let mut rng = Rng::new(21, 4);
-    for (name, primitive) in spawn_test_primitives() {
-        let world = World::from_primitives(vec![primitive.clone()]);
+    for (name, object) in spawn_test_objects() {
+        let scene = world_of(vec![object]);
+        let world = scene.world();
         // Aim at the bounds (planes: at a box around a point of the plane).
-        let target = primitive.bounds().unwrap_or_else(|| {
+        let target = world.primitive(0).bounds().unwrap_or_else(|| {
             let hit = world
                 .intersect(
                     &Ray::new(Point3::new(0.0, 1e7, 0.0), -Vec3::y(), 0.0),
@@ -217,12 +235,8 @@ fn non_uniformly_scaled_sphere_is_an_ellipsoid() {
     let center = Vec3::new(1.0, 2.0, 3.0);
     let matrix = Matrix::new_translation(&center)
         * Matrix::new_nonuniform_scaling(&Vec3::new(2.0, 1.0, 1.0));
-    let world = World::from_primitives(vec![Primitive {
-        shape: Shape::Sphere(Sphere::new(Point3::zeros(), 1.0, Vec3::zeros())),
-        transform: transform(matrix),
-        material: 0,
-        face_materials: None,
-    }]);
+    let scene = world_of(vec![transformed(matrix, ball(Point3::zeros(), 1.0, 0))]);
+    let world = scene.world();
     let mut rng = Rng::new(5, 5);
     let mut hits = 0;
     for _ in 0..2000 {
@@ -272,24 +286,40 @@ fn assert_finite_hit(world: &World, ray: &Ray, what: &str) {
 
 #[test]
 fn axis_parallel_and_grazing_rays_give_no_nan() {
-    use pathtracer::geometry::Triangle;
+    let revolution = |profile| Object::Revolution {
+        profile,
+        material: 0,
+    };
     let shapes = vec![
-        Shape::Sphere(Sphere::new(Point3::zeros(), 1.0, Vec3::zeros())),
-        Shape::Plane(Plane::new(Vec3::y(), 0.0).unwrap()),
-        Shape::Triangle(Triangle::new([Point3::zeros(), Point3::x(), Point3::y()])),
-        Shape::Rectangle(Rectangle::new(Point3::zeros(), Vec3::x(), Vec3::z()).unwrap()),
-        Shape::Disk(Disk::new(Point3::zeros(), Vec3::y(), 1.0).unwrap()),
-        Shape::Revolution(Arc::new(Revolution::new(&vase()).unwrap())),
-        Shape::Revolution(Arc::new(Revolution::new(&wine_glass()).unwrap())),
+        ball(Point3::zeros(), 1.0, 0),
+        Object::Plane {
+            normal: Vec3::y(),
+            offset: 0.0,
+            material: 0,
+        },
+        Object::Triangle {
+            vertices: [Point3::zeros(), Point3::x(), Point3::y()],
+            material: 0,
+        },
+        Object::Rectangle {
+            origin: Point3::zeros(),
+            edge_u: Vec3::x(),
+            edge_v: Vec3::z(),
+            material: 0,
+        },
+        Object::Disk {
+            center: Point3::zeros(),
+            normal: Vec3::y(),
+            radius: 1.0,
+            material: 0,
+        },
+        revolution(vase()),
+        revolution(wine_glass()),
     ];
     for shape in shapes {
-        let world = World::from_primitives(vec![Primitive {
-            shape: shape.clone(),
-            transform: None,
-            material: 0,
-            face_materials: None,
-        }]);
         let what = format!("{shape:?}").chars().take(40).collect::<String>();
+        let scene = world_of(vec![shape]);
+        let world = scene.world();
         // Axis-parallel rays from a grid that includes the axis, the box faces and
         // the surface itself (grazing: rays in the plane of flat shapes, tangent
         // to the sphere).
@@ -304,9 +334,9 @@ fn axis_parallel_and_grazing_rays_give_no_nan() {
                         origin[axis] = -10.0 * sign;
                         let mut direction = Vec3::zeros();
                         direction[axis] = sign;
-                        assert_finite_hit(&world, &Ray::new(origin, direction, 0.0), &what);
+                        assert_finite_hit(world, &Ray::new(origin, direction, 0.0), &what);
                         origin[axis] = 0.0;
-                        assert_finite_hit(&world, &Ray::new(origin, direction, 0.0), &what);
+                        assert_finite_hit(world, &Ray::new(origin, direction, 0.0), &what);
                     }
                 }
             }

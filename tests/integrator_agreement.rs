@@ -40,6 +40,7 @@ fn runs(scene: &Scene, integrator: Integrator, spp: u32) -> Vec<Vec<f64>> {
         clamp: None,
         light_paths: true,
         look: Default::default(),
+        dispersion: None,
     };
     common::independent_runs(scene, &settings, 1000, RUNS)
 }

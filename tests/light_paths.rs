@@ -16,7 +16,6 @@ use pathtracer::math::{Point3, Vec3};
 use pathtracer::render::{RenderSettings, render};
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Material, Object, Scene};
-use pathtracer::world::World;
 
 const WIDTH: u32 = 12;
 const HEIGHT: u32 = 9;
@@ -36,6 +35,7 @@ fn settings(integrator: Integrator, light_paths: bool, spp: u32, seed: u64) -> R
         clamp: None,
         light_paths,
         look: Default::default(),
+        dispersion: None,
     }
 }
 
@@ -206,8 +206,6 @@ fn light_paths_agree_with_motion_blur_and_depth_of_field() {
 
 #[test]
 fn splats_give_the_same_image_for_any_thread_count() {
-    let scene = caustic_box(true, true);
-    let world = World::build(&scene);
     let mut one = settings(Integrator::Path, true, 16, 3);
     one.sampler = SamplerKind::Sobol;
     one.threads = Some(1);
@@ -215,12 +213,12 @@ fn splats_give_the_same_image_for_any_thread_count() {
         threads: Some(2),
         ..one.clone()
     };
-    let (a, _) = render(&scene, &world, &one).expect("renders");
-    let (b, _) = render(&scene, &world, &two).expect("renders");
+    let scene = common::ready(caustic_box(true, true), &one);
+    let (a, _) = render(&scene, &one).expect("renders");
+    let (b, _) = render(&scene, &two).expect("renders");
     assert!(a.pixels == b.pixels, "1 and 2 threads differ");
-    let (c, _) = render(
-        &scene,
-        &world,
+    let (c, _) = common::render_scene(
+        &caustic_box(true, true),
         &RenderSettings {
             light_paths: false,
             ..one

@@ -8,10 +8,9 @@ use pathtracer::color::Color;
 use pathtracer::integrator::Integrator;
 use pathtracer::look::Look;
 use pathtracer::math::Vec3;
-use pathtracer::render::{RenderSettings, render};
+use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Light, Material, Object, Phong, Scene};
-use pathtracer::world::World;
 
 fn settings(look: Look, integrator: Integrator, spp: u32) -> RenderSettings {
     RenderSettings {
@@ -28,12 +27,12 @@ fn settings(look: Look, integrator: Integrator, spp: u32) -> RenderSettings {
         clamp: None,
         light_paths: true,
         look,
+        dispersion: None,
     }
 }
 
 fn mean(scene: &Scene, settings: &RenderSettings) -> Color {
-    let world = World::build(scene);
-    let (image, _) = render(scene, &world, settings).expect("renders");
+    let (image, _) = common::render_scene(scene, settings).expect("renders");
     let n = image.pixels.len() as f64;
     image.pixels.iter().fold(Color::BLACK, |sum, &c| sum + c) * (1.0 / n)
 }
@@ -110,11 +109,10 @@ fn the_pa1_look_casts_rays_with_the_framework_phong_term() {
         direction: Vec3::new(0.0, 0.0, -1.0),
         color: Color::gray(0.9),
     }];
-    let world = World::build(&scene);
     let mut s = settings(Look::PA1, Integrator::RayCast, 1);
     s.width = 3;
     s.height = 3;
-    let (image, _) = render(&scene, &world, &s).expect("renders");
+    let (image, _) = common::render_scene(&scene, &s).expect("renders");
     let centre = image.pixels[4];
     let expected = (0.2 + 0.3) * 0.9;
     assert!((centre.r - expected).abs() < 1e-9, "{centre:?}");
@@ -168,11 +166,10 @@ fn one_sided_planes_give_the_path_integrator_the_original_estimators_image() {
     // connection from the floor up to the camera would pass the glass that
     // the camera's ray is refracted by), so that look traces none.
     let scene = glass_over_floor();
-    let world = World::build_with(&scene, Look::YZC.shape_rules());
     let average = |integrator: Integrator| {
         let mut s = settings(Look::YZC, integrator, 1024);
         (s.width, s.height) = (8, 8);
-        let (image, _) = render(&scene, &world, &s).expect("renders");
+        let (image, _) = common::render_scene(&scene, &s).expect("renders");
         let n = image.pixels.len() as f64;
         image.pixels.iter().map(|c| c.r).sum::<f64>() / n
     };
@@ -221,11 +218,10 @@ fn cambrian_sphere_test_keeps_the_image_of_paths_traced_from_the_camera_alone() 
     // stop where they would cross such a sphere, and camera paths through
     // it count alone. (Without that stop this image comes out 12% dark.)
     let scene = glass_ball_on_floor();
-    let world = World::build_with(&scene, Look::CAMBRIAN.shape_rules());
     let average = |light_paths: bool| {
         let mut s = settings(Look::CAMBRIAN, Integrator::Path, 4096);
         (s.width, s.height, s.light_paths) = (8, 8, light_paths);
-        let (image, _) = render(&scene, &world, &s).expect("renders");
+        let (image, _) = common::render_scene(&scene, &s).expect("renders");
         let n = image.pixels.len() as f64;
         image.pixels.iter().map(|c| c.r).sum::<f64>() / n
     };

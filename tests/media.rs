@@ -3,17 +3,26 @@
 //! pure absorber seen along a ray and in an image.
 
 use pathtracer::color::Color;
-use pathtracer::integrator::{CameraSample, Integrator, SceneView, Splats};
+use pathtracer::integrator::{CameraSample, Integrator, Splats};
 use pathtracer::look::Look;
 use pathtracer::math::{Ray, Vec3};
 use pathtracer::medium::{HenyeyGreenstein, Medium};
+use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::rng::Rng;
 use pathtracer::sampler::Sampler;
 use pathtracer::scene::model::{Material, Object, Scene};
-use pathtracer::world::World;
+
+/// `scene` in the physical look, with paths of `max_depth` vertices.
+fn physical(scene: &Scene, max_depth: u32) -> RenderScene {
+    let settings = SceneSettings {
+        max_depth,
+        ..SceneSettings::defaults(scene, Look::PHYSICAL)
+    };
+    RenderScene::build(scene.clone(), &settings)
+}
 
 /// The path integrator's radiance along `ray`, from a default camera sample.
-fn path_radiance(view: &SceneView, ray: Ray, sampler: &mut Sampler) -> Color {
+fn path_radiance(view: &RenderScene, ray: Ray, sampler: &mut Sampler) -> Color {
     Integrator::Path.radiance(
         view,
         ray,
@@ -46,10 +55,8 @@ fn white_medium(scale: f64) -> Medium {
 /// directions (towards random points of the unit ball when `aimed`), and
 /// its standard error.
 fn mean_radiance(scene: &Scene, origin: Vec3, aimed: bool, paths: u64) -> [(f64, f64); 3] {
-    let world = World::build(scene);
-    let mut view = SceneView::with_look(scene, &world, Look::PHYSICAL);
-    view.max_depth = 1000;
-    assert!(view.media && !view.light_paths);
+    let view = physical(scene, 1000);
+    assert!(view.media() && !view.light_paths());
     let mut sums = [0.0; 3];
     let mut squares = [0.0; 3];
     for i in 0..paths {
@@ -143,9 +150,7 @@ fn a_grey_scattering_ball_in_a_white_furnace_returns_the_background_exactly() {
             Object::Group(vec![sphere(Vec3::zeros(), 1.0, 0)]),
         );
         scene.background = Color::gray(1.0);
-        let world = World::build(&scene);
-        let mut view = SceneView::with_look(&scene, &world, Look::PHYSICAL);
-        view.max_depth = 1000;
+        let view = physical(&scene, 1000);
         let origin = Vec3::new(0.1, 0.2, 3.0);
         for i in 0..5_000 {
             let mut rng = Rng::for_sample(i, 0, 13);
@@ -212,9 +217,7 @@ fn absorber_scene() -> Scene {
 
 #[test]
 fn an_emitter_through_a_pure_absorber_is_attenuated_by_exp_minus_sigma_t_d() {
-    let scene = absorber_scene();
-    let world = World::build(&scene);
-    let view = SceneView::with_look(&scene, &world, Look::PHYSICAL);
+    let view = physical(&absorber_scene(), 5);
     // Rays at height h cross a chord 2 sqrt(1 - h^2) of the ball.
     for h in [0.0, 0.5, 0.9] {
         let ray = Ray::new(Vec3::new(0.0, h, 5.0), Vec3::new(0.0, 0.0, -1.0), 0.0);
@@ -237,7 +240,6 @@ fn an_image_of_an_emitter_through_an_absorbing_ball_has_its_transmittance() {
     scene.camera.width = 4;
     scene.camera.height = 4;
     scene.camera.fov = Some((0.5, pathtracer::scene::model::FovAxis::Vertical));
-    let world = World::build(&scene);
     let settings = pathtracer::render::RenderSettings {
         width: 4,
         height: 4,
@@ -252,8 +254,10 @@ fn an_image_of_an_emitter_through_an_absorbing_ball_has_its_transmittance() {
         clamp: None,
         light_paths: true,
         look: Look::PHYSICAL,
+        dispersion: None,
     };
-    let (image, _) = pathtracer::render::render(&scene, &world, &settings).expect("renders");
+    let scene = RenderScene::build(scene, &settings.scene());
+    let (image, _) = pathtracer::render::render(&scene, &settings).expect("renders");
     let want = [0.25, 0.5, 1.0].map(|sigma: f64| 2.0 * (-2.0 * sigma).exp());
     for pixel in &image.pixels {
         for (got, want) in [pixel.r, pixel.g, pixel.b].into_iter().zip(want) {
@@ -284,17 +288,19 @@ fn light_subpaths_are_off_and_said_so_in_scenes_with_media() {
         sphere(Vec3::new(0.0, 5.0, -5.0), 0.2, 2),
     ]);
     let mut scene = Scene::new(vec![glass, floor, light], root);
-    let world = World::build(&scene);
-    assert!(SceneView::with_look(&scene, &world, Look::PHYSICAL).light_paths);
-    let notes = pathtracer::integrator::media_notes(&scene, Integrator::Path);
-    assert!(notes.is_empty());
+    let view = physical(&scene, 5);
+    assert!(view.light_paths());
+    assert!(view.notices(Integrator::Path).is_empty());
     scene.medium = Some(white_medium(0.01));
-    let view = SceneView::with_look(&scene, &world, Look::PHYSICAL);
-    assert!(view.media && !view.light_paths);
-    let notes = pathtracer::integrator::media_notes(&scene, Integrator::Path);
-    assert!(notes[0].contains("light subpaths"), "{notes:?}");
-    let notes = pathtracer::integrator::media_notes(&scene, Integrator::Original);
-    assert!(notes[0].contains("original estimator ignores"), "{notes:?}");
+    let view = physical(&scene, 5);
+    assert!(view.media() && !view.light_paths());
+    let notes = view.notices(Integrator::Path);
+    assert!(notes[0].to_string().contains("light subpaths"), "{notes:?}");
+    let notes = view.notices(Integrator::Original);
+    assert!(
+        notes[0].to_string().contains("original estimator ignores"),
+        "{notes:?}"
+    );
 }
 
 #[test]
@@ -323,9 +329,8 @@ fn a_directional_light_through_an_absorbing_ball_is_attenuated_twice() {
             direction: Vec3::new(0.0, -1.0, 0.0),
             color: Color::WHITE,
         });
-    let world = World::build(&scene);
-    let view = SceneView::with_look(&scene, &world, Look::PHYSICAL);
-    assert!(!view.direct_lights.is_empty());
+    let view = physical(&scene, 5);
+    assert!(!view.direct_lights().is_empty());
     let ray = Ray::new(Vec3::new(0.0, 5.0, 0.0), Vec3::new(0.0, -1.0, 0.0), 0.0);
     let mut sampler = Sampler::Independent(Rng::for_sample(0, 0, 2));
     let l = path_radiance(&view, ray, &mut sampler);

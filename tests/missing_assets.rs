@@ -10,13 +10,12 @@ use std::path::{Path, PathBuf};
 
 use pathtracer::color::Color;
 use pathtracer::integrator::Integrator;
-use pathtracer::render::{RenderSettings, render};
+use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::error::SceneError;
 use pathtracer::scene::model::Scene;
 use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
 use pathtracer::texture::Texture;
-use pathtracer::world::World;
 
 fn placeholder() -> LoadOptions {
     LoadOptions {
@@ -112,8 +111,7 @@ Group { numObjects 1 MaterialIndex 0 Plane { normal 0 0 1 offset 0 } }
 ";
     let file = scene_file("colours", text);
     let scene = load_scene(&file, &placeholder()).expect("loads");
-    let world = World::build(&scene);
-    let (image, stats) = render(&scene, &world, &settings(32, 32, 4)).expect("renders");
+    let (image, stats) = common::render_scene(&scene, &settings(32, 32, 4)).expect("renders");
     assert_eq!(stats.dropped, 0);
     let near =
         |a: Color, b: Color| (a.r - b.r).abs() + (a.g - b.g).abs() + (a.b - b.b).abs() < 1e-6;
@@ -149,6 +147,7 @@ fn settings(width: u32, height: u32, spp: u32) -> RenderSettings {
         clamp: None,
         light_paths: true,
         look: Default::default(),
+        dispersion: None,
     }
 }
 
@@ -192,8 +191,7 @@ fn every_coursework_scene_with_a_missing_file_loads_with_placeholders_and_render
                 failures.push(format!("{name}: no warning in place of '{error}'"));
             }
         }
-        let world = World::build(&scene);
-        match render(&scene, &world, &settings(8, 6, 2)) {
+        match common::render_scene(&scene, &settings(8, 6, 2)) {
             Ok((image, stats)) => {
                 if stats.dropped > 0 || image.pixels.iter().any(|p| !p.is_finite()) {
                     failures.push(format!("{name}: NaN or infinite samples"));

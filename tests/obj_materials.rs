@@ -11,13 +11,11 @@ use std::path::{Path, PathBuf};
 use common::statistic;
 use pathtracer::color::Color;
 use pathtracer::integrator::{Integrator, original::MAX_DEPTH};
-use pathtracer::lights::Emitters;
 use pathtracer::math::Point3;
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::LoadOptions;
 use pathtracer::scene::model::{Dialect, OWN_MATERIAL, Object, Scene};
-use pathtracer::world::World;
 
 /// A fresh folder for one test's files.
 fn folder(name: &str) -> PathBuf {
@@ -133,6 +131,7 @@ fn runs(scene: &Scene, integrator: Integrator) -> Vec<Vec<f64>> {
         clamp: None,
         light_paths: true,
         look: Default::default(),
+        dispersion: None,
     };
     common::independent_runs(scene, &settings, 500, 24)
 }
@@ -165,9 +164,9 @@ fn box_lit_by_a_ke_material_renders_alike_with_both_integrators() {
     );
 
     // Light sampling finds the lamp's two triangles (and only them).
-    let world = World::build(&scene);
-    let emitters = Emitters::build(&scene, &world);
-    let sample = emitters
+    let ready = common::built(scene.clone());
+    let sample = ready
+        .emitters()
         .sample(&Point3::new(0.0, -0.5, 0.0), 0.0, 0.3, [0.4, 0.6])
         .expect("the lamp is sampled");
     assert_eq!(sample.emission, Color::gray(6.0));

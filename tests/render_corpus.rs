@@ -7,9 +7,9 @@ mod common;
 
 use pathtracer::integrator::Integrator;
 use pathtracer::render::{RenderSettings, render};
+use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::{LoadOptions, load_scene};
-use pathtracer::world::World;
 
 #[test]
 fn every_shared_scene_renders_without_nan_or_inf_samples() {
@@ -36,7 +36,10 @@ fn every_shared_scene_renders_without_nan_or_inf_samples() {
         } else {
             (32, 24, 4)
         };
-        let world = World::build(&scene);
+        let look = Default::default();
+        let mut scene_settings = SceneSettings::defaults(&scene, look);
+        (scene_settings.width, scene_settings.height) = (width, height);
+        let scene = RenderScene::build(scene, &scene_settings);
         for integrator in Integrator::ALL {
             let settings = RenderSettings {
                 width,
@@ -51,10 +54,11 @@ fn every_shared_scene_renders_without_nan_or_inf_samples() {
                 progress_every: None,
                 clamp: None,
                 light_paths: true,
-                look: Default::default(),
+                look,
+                dispersion: None,
             };
             let name = format!("{} ({})", file.display(), integrator.name());
-            let (image, stats) = match render(&scene, &world, &settings) {
+            let (image, stats) = match render(&scene, &settings) {
                 Ok(result) => result,
                 Err(error) => {
                     failures.push(format!("{name}: {error}"));

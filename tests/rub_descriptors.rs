@@ -4,6 +4,8 @@
 //! colour texture, an `nTexture` under `nTexture` a tangent-space normal
 //! map. Errors and warnings about a descriptor's content are located in it.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 
 use pathtracer::checker::Checker;
@@ -12,9 +14,7 @@ use pathtracer::image_io::{Image, write_image};
 use pathtracer::math::{Point3, Ray, Vec3};
 use pathtracer::scene::model::Scene;
 use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
-use pathtracer::shading::Shading;
 use pathtracer::texture::Texture;
-use pathtracer::world::World;
 
 /// rub's layout: `root/testcases/scene.txt` next to its descriptors, paths
 /// written from the root. Returns the scene file.
@@ -65,12 +65,10 @@ fn load(file: &Path, missing_assets: MissingAssets) -> Result<Scene, String> {
 }
 
 fn shading_at(scene: &Scene, x: f64, y: f64) -> (Color, Vec3) {
-    let world = World::build(scene);
+    let scene = common::built(scene.clone());
     let ray = Ray::new(Point3::new(x, y, 5.0), -Vec3::z(), 0.0);
-    let hit = world
-        .intersect(&ray, 0.0, f64::INFINITY)
-        .expect("hits the quad");
-    let shading = Shading::new(scene, &hit, &ray);
+    let hit = scene.intersect(&ray).expect("hits the quad");
+    let shading = scene.shade(&hit, &ray);
     (shading.color, shading.normal)
 }
 

@@ -105,9 +105,9 @@ fn mean_errors(world: &World, rng: &mut Rng) -> (f64, f64) {
 
 #[test]
 fn smooth_sphere_mesh_without_vn_gets_close_unit_continuous_normals() {
-    let scene = mesh_scene("smooth", &sphere_obj(12, 24), "smooth");
-    let world = World::build(&scene);
-    let (mesh, smooth) = the_mesh(&world);
+    let scene = built(mesh_scene("smooth", &sphere_obj(12, 24), "smooth"));
+    let world = scene.world();
+    let (mesh, smooth) = the_mesh(world);
     assert!(smooth);
     assert!(mesh.data.normals.is_none(), "the file has no vn");
     let normals = mesh.computed_normals().expect("computed at build");
@@ -120,7 +120,7 @@ fn smooth_sphere_mesh_without_vn_gets_close_unit_continuous_normals() {
         assert!(n.angle(&(p - Point3::zeros())) < 0.13, "{n:?} at {p:?}");
     }
 
-    let (shading, face) = mean_errors(&world, &mut Rng::new(4, 9));
+    let (shading, face) = mean_errors(world, &mut Rng::new(4, 9));
     println!("mean angle to the true normal: interpolated {shading:.5}, faces {face:.5}");
     // Measured: 0.013 against 0.091 rad (12 x 24 sphere).
     assert!(
@@ -177,9 +177,9 @@ fn smooth_sphere_mesh_without_vn_gets_close_unit_continuous_normals() {
 #[test]
 fn without_smooth_and_vn_triangles_are_flat_and_vn_is_always_used() {
     let obj = sphere_obj(8, 16);
-    let flat = World::build(&mesh_scene("flat", &obj, ""));
-    assert!(the_mesh(&flat).0.computed_normals().is_none());
-    let (shading, face) = mean_errors(&flat, &mut Rng::new(5, 1));
+    let flat = built(mesh_scene("flat", &obj, ""));
+    assert!(the_mesh(flat.world()).0.computed_normals().is_none());
+    let (shading, face) = mean_errors(flat.world(), &mut Rng::new(5, 1));
     assert_eq!(shading, face, "flat shading is the face normal");
 
     // The same sphere with exact vn, not `smooth`: interpolated anyway.
@@ -196,11 +196,12 @@ fn without_smooth_and_vn_triangles_are_flat_and_vn_is_always_used() {
             with_vn += &format!("{line}\n");
         }
     }
-    let world = World::build(&mesh_scene("vn", &with_vn, ""));
-    let (mesh, smooth) = the_mesh(&world);
+    let scene = built(mesh_scene("vn", &with_vn, ""));
+    let world = scene.world();
+    let (mesh, smooth) = the_mesh(world);
     assert!(!smooth && mesh.computed_normals().is_none());
     assert_eq!(mesh.data.normals.as_ref().map(Vec::len), Some(vertices));
-    let (shading, face) = mean_errors(&world, &mut Rng::new(5, 2));
+    let (shading, face) = mean_errors(world, &mut Rng::new(5, 2));
     assert!(
         shading < 0.1 * face,
         "vn interpolated: {shading} vs faces {face}"
@@ -218,8 +219,8 @@ fn cambrian_smooth_bunny_without_vn_is_smooth() {
         base,
         ..LoadOptions::default()
     };
-    let scene = pathtracer::scene::load_scene(&file, &options).expect("loads");
-    let world = World::build(&scene);
+    let scene = built(pathtracer::scene::load_scene(&file, &options).expect("loads"));
+    let world = scene.world();
     let smooth: Vec<&Mesh> = world
         .primitives()
         .iter()

@@ -12,11 +12,10 @@ use pathtracer::image_io::Image;
 use pathtracer::integrator::Integrator;
 use pathtracer::math::{Matrix, Ray, Vec3};
 use pathtracer::metrics::compare;
-use pathtracer::render::{RenderSettings, render};
+use pathtracer::render::RenderSettings;
 use pathtracer::rng::Rng;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{CurveKind, Material, MeshData, Object, Profile, Scene};
-use pathtracer::world::World;
 
 fn materials() -> Vec<Material> {
     vec![
@@ -160,9 +159,9 @@ fn render_scene(scene: &Scene) -> (Image, u64) {
         clamp: None,
         light_paths: true,
         look: Default::default(),
+        dispersion: None,
     };
-    let world = World::build(scene);
-    let (image, stats) = render(scene, &world, &settings).expect("renders");
+    let (image, stats) = common::render_scene(scene, &settings).expect("renders");
     (image, stats.dropped)
 }
 
@@ -220,8 +219,8 @@ fn the_full_dragon_with_degenerate_triangles_gives_finite_hits() {
         material: 0,
         face_materials: None,
     };
-    let scene = common::scene_with(materials(), root);
-    let world = World::build(&scene);
+    let scene = common::built(common::scene_with(materials(), root));
+    let world = scene.world();
     let bounds = world.bounds();
     let mut rng = Rng::new(4, 4);
     let mut hits = 0;
@@ -247,8 +246,8 @@ fn a_cusped_profile_and_near_tangent_rays_give_no_nan() {
         profile,
         material: 0,
     };
-    let scene = common::scene_with(materials(), root);
-    let world = World::build(&scene);
+    let scene = common::built(common::scene_with(materials(), root));
+    let world = scene.world();
     let bounds = world.bounds();
     let mut rng = Rng::new(6, 6);
     let mut hits = 0;

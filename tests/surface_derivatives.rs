@@ -9,11 +9,10 @@ mod common;
 use std::sync::Arc;
 
 use common::*;
-use pathtracer::geometry::{Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, Triangle};
 use pathtracer::math::{Aabb, Matrix, Point3, Ray, Vec3};
 use pathtracer::rng::Rng;
-use pathtracer::scene::model::MeshData;
-use pathtracer::world::{Primitive, UvMapping, World, WorldHit};
+use pathtracer::scene::model::{MeshData, Object};
+use pathtracer::world::{UvMapping, World, WorldHit};
 
 /// A curved 8x8 grid patch `z = 0.3 (x^2 + y^2)`, with an oblique affine uv
 /// map when `with_uv` (else uv are the barycentrics of each triangle).
@@ -47,54 +46,67 @@ fn patch(with_uv: bool) -> MeshData {
     data
 }
 
-fn shapes() -> Vec<(&'static str, Shape)> {
-    let mesh = |data| Shape::Mesh {
-        mesh: Arc::new(Mesh::new(Arc::new(data))),
+fn shapes() -> Vec<(&'static str, Object)> {
+    let mesh = |data| Object::Mesh {
+        mesh: Arc::new(data),
         smooth: false,
+        material: 0,
+        face_materials: None,
     };
     vec![
-        (
-            "sphere",
-            Shape::Sphere(Sphere::new(Point3::new(0.3, -0.2, 0.1), 1.2, Vec3::zeros())),
-        ),
+        ("sphere", ball(Point3::new(0.3, -0.2, 0.1), 1.2, 0)),
         (
             "plane",
-            Shape::Plane(Plane::new(Vec3::new(0.2, 1.0, -0.3), 0.7).expect("plane")),
+            Object::Plane {
+                normal: Vec3::new(0.2, 1.0, -0.3),
+                offset: 0.7,
+                material: 0,
+            },
         ),
         (
             "triangle",
-            Shape::Triangle(Triangle::new([
-                Point3::new(-1.0, 0.0, 0.2),
-                Point3::new(1.5, -0.5, 0.0),
-                Point3::new(0.2, 1.3, -0.4),
-            ])),
+            Object::Triangle {
+                vertices: [
+                    Point3::new(-1.0, 0.0, 0.2),
+                    Point3::new(1.5, -0.5, 0.0),
+                    Point3::new(0.2, 1.3, -0.4),
+                ],
+                material: 0,
+            },
         ),
         (
             "rectangle",
-            Shape::Rectangle(
-                Rectangle::new(
-                    Point3::new(-1.0, 0.2, -1.0),
-                    Vec3::new(2.0, 0.1, 0.0),
-                    Vec3::new(0.3, 0.0, 2.0),
-                )
-                .expect("rectangle"),
-            ),
+            Object::Rectangle {
+                origin: Point3::new(-1.0, 0.2, -1.0),
+                edge_u: Vec3::new(2.0, 0.1, 0.0),
+                edge_v: Vec3::new(0.3, 0.0, 2.0),
+                material: 0,
+            },
         ),
         (
             "disk",
-            Shape::Disk(
-                Disk::new(Point3::new(0.1, 0.2, 0.3), Vec3::new(1.0, 2.0, 3.0), 1.5).expect("disk"),
-            ),
+            Object::Disk {
+                center: Point3::new(0.1, 0.2, 0.3),
+                normal: Vec3::new(1.0, 2.0, 3.0),
+                radius: 1.5,
+                material: 0,
+            },
         ),
         ("mesh with vt", mesh(patch(true))),
         ("mesh without vt", mesh(patch(false))),
         (
             "vase",
-            Shape::Revolution(Arc::new(Revolution::new(&vase()).expect("vase"))),
+            Object::Revolution {
+                profile: vase(),
+                material: 0,
+            },
         ),
         (
             "glass",
-            Shape::Revolution(Arc::new(Revolution::new(&wine_glass()).expect("glass"))),
+            Object::Revolution {
+                profile: wine_glass(),
+                material: 0,
+            },
         ),
     ]
 }
@@ -116,8 +128,8 @@ fn transforms() -> [(&'static str, Matrix); 3] {
 
 /// Where rays are aimed: the bounds, or (planes) a box around a point of
 /// it, 40 texels wide.
-fn target_box(world: &World, primitive: &Primitive) -> Aabb {
-    primitive.bounds().unwrap_or_else(|| {
+fn target_box(world: &World) -> Aabb {
+    world.primitive(0).bounds().unwrap_or_else(|| {
         let down = Ray::new(Point3::new(0.0, 1e4, 0.0), -Vec3::y(), 0.0);
         let hit = world
             .intersect(&down, 0.0, f64::INFINITY)
@@ -150,14 +162,9 @@ fn moving_along_a_derivative_moves_uv_by_one_coordinate() {
     let mut rng = Rng::new(31, 7);
     for (name, shape) in shapes() {
         for (label, matrix) in transforms() {
-            let primitive = Primitive {
-                shape: shape.clone(),
-                transform: transform(matrix),
-                material: 0,
-                face_materials: None,
-            };
-            let world = World::from_primitives(vec![primitive.clone()]);
-            let target = target_box(&world, &primitive);
+            let scene = world_of(vec![transformed(matrix, shape.clone())]);
+            let world = scene.world();
+            let target = target_box(world);
             let size = target.extent().norm();
             let mut checked = 0;
             for _ in 0..600 {
@@ -179,7 +186,7 @@ fn moving_along_a_derivative_moves_uv_by_one_coordinate() {
                         continue;
                     }
                     let eps = 1e-5 * size / length;
-                    let Some(delta) = uv_step(&world, &hit, derivative * eps, size) else {
+                    let Some(delta) = uv_step(world, &hit, derivative * eps, size) else {
                         continue;
                     };
                     let mut expected = [0.0; 2];
@@ -203,28 +210,30 @@ fn moving_along_a_derivative_moves_uv_by_one_coordinate() {
 #[test]
 fn derivatives_are_finite_at_singular_points() {
     // The pole of a sphere, the centre of a disk, the axis of a revolution.
-    let cases: [(Shape, Ray); 3] = [
+    let cases: [(Object, Ray); 3] = [
         (
-            Shape::Sphere(Sphere::new(Point3::zeros(), 1.0, Vec3::zeros())),
+            ball(Point3::zeros(), 1.0, 0),
             Ray::new(Point3::new(0.0, 5.0, 0.0), -Vec3::y(), 0.0),
         ),
         (
-            Shape::Disk(Disk::new(Point3::zeros(), Vec3::y(), 1.0).expect("disk")),
+            Object::Disk {
+                center: Point3::zeros(),
+                normal: Vec3::y(),
+                radius: 1.0,
+                material: 0,
+            },
             Ray::new(Point3::new(0.0, 5.0, 0.0), -Vec3::y(), 0.0),
         ),
         (
-            Shape::Revolution(Arc::new(Revolution::new(&vase()).expect("vase"))),
+            Object::Revolution {
+                profile: vase(),
+                material: 0,
+            },
             Ray::new(Point3::new(0.0, -5.0, 0.0), Vec3::y(), 0.0),
         ),
     ];
-    for (shape, ray) in cases {
-        let world = World::from_primitives(vec![Primitive {
-            shape,
-            transform: None,
-            material: 0,
-            face_materials: None,
-        }]);
-        let hit = world.intersect(&ray, 0.0, f64::INFINITY).expect("hit");
+    for (object, ray) in cases {
+        let hit = world_of(vec![object]).intersect(&ray).expect("hit");
         for d in [hit.dpdu, hit.dpdv] {
             assert!(d.iter().all(|c| c.is_finite()) && d.norm() > 0.0, "{hit:?}");
             assert!(

@@ -70,8 +70,7 @@ fuzz_target!(
             let Some(mut scene) = tiny_render::build_text(&text, &file, &options) else {
                 return;
             };
-            let (look, world) = tiny_render::prepare(&mut scene);
-            let bounds = world.bounds();
+            let bounds = tiny_render::bounds(&scene);
             let extent = bounds.max - bounds.min;
             let centre = bounds.min + extent * 0.5;
             let size = extent.norm();
@@ -79,7 +78,7 @@ fuzz_target!(
                 scene.camera.center = centre + Vec3::new(0.3, 0.4, 1.0) * size;
                 scene.camera.direction = centre - scene.camera.center;
             }
-            tiny_render::render_every_integrator(&scene, &world, look);
+            tiny_render::render_every_integrator(scene);
         });
         Corpus::Keep
     }

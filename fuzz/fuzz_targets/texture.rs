@@ -49,11 +49,10 @@ fuzz_target!(
             ..LoadOptions::default()
         };
         panics::crash_on_panic(|| {
-            let Some(mut scene) = tiny_render::build_text(&text, &file, &options) else {
+            let Some(scene) = tiny_render::build_text(&text, &file, &options) else {
                 return;
             };
-            let (look, world) = tiny_render::prepare(&mut scene);
-            tiny_render::render_every_integrator(&scene, &world, look);
+            tiny_render::render_every_integrator(scene);
         });
         Corpus::Keep
     }

@@ -6,11 +6,12 @@ use std::path::Path;
 
 use pathtracer::integrator::Integrator;
 use pathtracer::look::Look;
+use pathtracer::math::Aabb;
 use pathtracer::render::{RenderSettings, render};
+use pathtracer::render_scene::RenderScene;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::Scene;
 use pathtracer::scene::{LoadOptions, build, parse, summary};
-use pathtracer::world::World;
 
 /// Pixels on each side of the tiny image.
 pub const SIDE: u32 = 4;
@@ -33,35 +34,44 @@ pub fn build_text(text: &str, file: &Path, options: &LoadOptions) -> Option<Scen
     }
 }
 
-/// The scene's world under its own look (textures turned as that look reads them).
-pub fn prepare(scene: &mut Scene) -> (Look, World) {
+/// The settings of a [`SIDE`]x[`SIDE`], 1-spp render with `integrator`
+/// under `look`.
+fn settings(look: Look, integrator: Integrator) -> RenderSettings {
+    RenderSettings {
+        width: SIDE,
+        height: SIDE,
+        spp: 1,
+        seed: 1,
+        threads: Some(1),
+        integrator,
+        max_depth: look.max_depth,
+        sampler: SamplerKind::Sobol,
+        progress: false,
+        progress_every: None,
+        clamp: None,
+        light_paths: true,
+        look,
+        dispersion: None,
+    }
+}
+
+/// The bounds of the scene's shapes as its own look builds them.
+pub fn bounds(scene: &Scene) -> Aabb {
     let (look, _) = Look::detect(scene);
-    look.adapt(scene);
-    let world = World::build_with(scene, look.one_sided_planes);
-    (look, world)
+    let settings = settings(look, Integrator::Path);
+    RenderScene::build(scene.clone(), &settings.scene()).bounds()
 }
 
 /// Renders `scene` at [`SIDE`]x[`SIDE`], 1 spp, with each integrator under
-/// the scene's look. A render error is fine (hostile input may be refused);
-/// the image must have its size and no pixel may be NaN or infinite.
-pub fn render_every_integrator(scene: &Scene, world: &World, look: Look) {
+/// the scene's look (its render-time scene built once, as a render builds
+/// it). A render error is fine (hostile input may be refused); the image
+/// must have its size and no pixel may be NaN or infinite.
+pub fn render_every_integrator(scene: Scene) {
+    let (look, _) = Look::detect(&scene);
+    let scene = RenderScene::build(scene, &settings(look, Integrator::Path).scene());
     for integrator in Integrator::ALL {
-        let settings = RenderSettings {
-            width: SIDE,
-            height: SIDE,
-            spp: 1,
-            seed: 1,
-            threads: Some(1),
-            integrator,
-            max_depth: look.max_depth,
-            sampler: SamplerKind::Sobol,
-            progress: false,
-            progress_every: None,
-            clamp: None,
-            light_paths: true,
-            look,
-        };
-        if let Ok((image, _)) = render(scene, world, &settings) {
+        let settings = settings(look, integrator);
+        if let Ok((image, _)) = render(&scene, &settings) {
             assert_eq!(image.pixels.len(), (SIDE * SIDE) as usize);
             assert!(
                 image.pixels.iter().all(|p| p.is_finite()),

@@ -53,14 +53,6 @@ pub struct LookLobes {
     pub osb_glossy: bool,
 }
 
-/// The lobe set of every material, in order.
-pub fn lobe_sets(materials: &[Material], look: LookLobes) -> Vec<LobeSet> {
-    materials
-        .iter()
-        .map(|m| LobeSet::from_material(m, look))
-        .collect()
-}
-
 impl LobeSet {
     /// The lobes of `material` (see the module documentation); the tints
     /// of the weighted lobes are the hit's colour.

@@ -48,7 +48,7 @@ use crate::color::Color;
 use crate::math::{Vec3, orthonormal_basis};
 use crate::spectral::Dispersion;
 
-pub use build::{Rules, lobe_sets};
+pub use build::Rules;
 pub use dielectric::GlassChoice;
 pub use fresnel::DielectricFresnel;
 pub use lambert::Lambert;

@@ -1,7 +1,6 @@
 //! `pathtracer converge` (error against time for one scene) and
 //! `pathtracer plot` (several such curves in one SVG).
 
-use crate::commands::prepare;
 use std::path::PathBuf;
 
 use clap::Args;
@@ -13,7 +12,7 @@ use pathtracer::image_io::{
 use pathtracer::plot::{Series, check_plottable, log_log_svg};
 use pathtracer::render::render_within;
 
-use super::{SamplingOptions, default_output, load_for_render};
+use super::{SamplingOptions, default_output, load_for_render, render_scene};
 
 /// Seeds of references differ from the seeds of the runs they judge.
 const REFERENCE_SEED_OFFSET: u64 = 0x5EED_F4EF;
@@ -60,7 +59,7 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
             "_reference.pfm",
         ))?),
     };
-    let mut scene = load_for_render(&args.scene, &args.sampling.scene)?;
+    let scene = load_for_render(&args.scene, &args.sampling.scene)?;
     let mut inputs = super::render::scene_inputs(&args.scene, &scene);
     if let Some(reference) = &args.reference {
         inputs.push(("the reference", reference.as_path()));
@@ -73,20 +72,22 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
     let settings = args.sampling.settings(&scene, args.max_spp, false);
     args.sampling.check_size(&settings)?;
     let budget = args.sampling.scene.memory_budget();
-    let world = prepare(&mut scene, &settings);
+    let scene = render_scene(scene, &settings);
     let reference = match (&args.reference, reference_file.take()) {
         (Some(path), _) => read_image(path)?,
         (None, None) => return Err("converge: no reference to read or render".to_string()),
         (None, Some(mut file)) => {
             let path = file.path().to_path_buf();
-            let mut reference_settings = args.sampling.settings(&scene, args.reference_spp, true);
+            let mut reference_settings =
+                args.sampling
+                    .settings(scene.description(), args.reference_spp, true);
             reference_settings.seed = settings.seed.wrapping_add(REFERENCE_SEED_OFFSET);
             eprintln!(
                 "rendering a reference at {} spp into {}",
                 args.reference_spp,
                 path.display()
             );
-            let (image, stats) = render_within(&scene, &world, &reference_settings, budget)?;
+            let (image, stats) = render_within(&scene, &reference_settings, budget)?;
             eprintln!("reference took {:.1} s", stats.seconds);
             file.write(&encode_image(&path, &image, &Encoding::gamma(None))?)?;
             file.commit()?;
@@ -94,24 +95,16 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
         }
     };
     say!("spp  seconds  rmse  rel_mse  ssim");
-    let points = converge_within(
-        &scene,
-        &world,
-        &settings,
-        &reference,
-        args.max_spp,
-        budget,
-        |p| {
-            say!(
-                "{} {:.3} {:.6} {:.6e} {:.4}",
-                p.spp,
-                p.seconds,
-                p.rmse,
-                p.rel_mse,
-                p.ssim
-            )
-        },
-    )?;
+    let points = converge_within(&scene, &settings, &reference, args.max_spp, budget, |p| {
+        say!(
+            "{} {:.3} {:.6} {:.6e} {:.4}",
+            p.spp,
+            p.seconds,
+            p.rmse,
+            p.rel_mse,
+            p.ssim
+        )
+    })?;
     csv_file.write(to_csv(&points).as_bytes())?;
     let name = args
         .scene

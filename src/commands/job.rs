@@ -13,7 +13,7 @@ use pathtracer::render::render_into;
 use pathtracer::render_job::{Crop, JobHeader, parse_samples};
 
 use super::render::scene_inputs;
-use super::{SamplingOptions, load_for_render, prepare};
+use super::{SamplingOptions, load_for_render, render_scene};
 
 /// The options that make `render` a render job.
 #[derive(Args)]
@@ -63,7 +63,7 @@ pub fn run(
     // read, and a film that would replace one of the render's inputs is
     // refused.
     let mut part_file = PendingFile::reserve(part)?;
-    let mut scene = load_for_render(scene_path, &sampling.scene)?;
+    let scene = load_for_render(scene_path, &sampling.scene)?;
     refuse_inputs(&[&part_file], &scene_inputs(scene_path, &scene))?;
     let settings = sampling.settings(&scene, samples.end, !quiet);
     let crop = job
@@ -71,14 +71,14 @@ pub fn run(
         .unwrap_or(Crop::full(settings.width, settings.height));
     crop.check(settings.width, settings.height)?;
     check_writable(part, settings.width as usize, settings.height as usize)?;
-    let world = prepare(&mut scene, &settings);
+    let scene = render_scene(scene, &settings);
     let mut film = Film::new(settings.width as usize, settings.height as usize);
     crop.restrict(&mut film);
-    let stats = render_into(&scene, &world, &settings, &mut film, samples.clone())?;
+    let stats = render_into(&scene, &settings, &mut film, samples.clone())?;
     let header = JobHeader::new(
         &scene_path.display().to_string(),
-        scene.load.source_hash,
-        world.triangle_count() as u64,
+        scene.description().load.source_hash,
+        scene.world().triangle_count() as u64,
         &settings,
         sampling.scene.missing_assets.name(),
         crop,

@@ -3,7 +3,7 @@
 //! theirs and the error map of each, `index.html`, `lookalike.csv` and the
 //! summary (`pathtracer::pairs`).
 
-use crate::commands::prepare;
+use crate::commands::render_scene;
 use std::collections::HashSet;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
@@ -226,16 +226,13 @@ impl PairJob<'_> {
             base: Some(self.pair.base_path(self.root)),
             ..LoadOptions::default()
         };
-        let mut scene = match load_scene(&self.pair.scene_path(self.root), &options) {
+        let scene = match load_scene(&self.pair.scene_path(self.root), &options) {
             Ok(scene) => scene,
             Err(error) => {
                 let seconds = started.elapsed().as_secs_f64();
                 return self.failed(seconds, has_theirs, None, format!("does not load: {error}"));
             }
         };
-        if self.pair.command_line_dispersion() {
-            super::apply_dispersion(&mut scene, Dispersion::YUZC19);
-        }
         let (look, _) = self.sampling.look(&scene);
         let dialect = Some((scene.dialect.name().to_string(), look.name.to_string()));
         if !scene.warnings.is_empty() {
@@ -247,9 +244,12 @@ impl PairJob<'_> {
         let mut sampling = self.sampling.clone();
         sampling.width = Some(width as u32);
         sampling.height = Some(height as u32);
+        if self.pair.command_line_dispersion() {
+            sampling.scene.dispersion = Some(Dispersion::YUZC19);
+        }
         let settings = sampling.settings(&scene, self.spp, true);
-        let world = prepare(&mut scene, &settings);
-        let rendered = render(&scene, &world, &settings);
+        let scene = render_scene(scene, &settings);
+        let rendered = render(&scene, &settings);
         let seconds = started.elapsed().as_secs_f64();
         let ours = match rendered {
             Ok((image, _)) => image,

@@ -28,12 +28,11 @@ use pathtracer::integrator::Integrator;
 use pathtracer::limits::{MAX_IMAGE_SIDE, MAX_PATH_DEPTH, MemoryBudget};
 use pathtracer::look::{Look, PixelSampling};
 use pathtracer::render::RenderSettings;
+use pathtracer::render_scene::RenderScene;
 use pathtracer::sampler::SamplerKind;
-use pathtracer::scene::build::dispersion::apply_channels;
 use pathtracer::scene::model::{Dialect, Scene};
 use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
 use pathtracer::spectral::Dispersion;
-use pathtracer::world::World;
 
 #[derive(Args, Clone)]
 pub struct SceneOptions {
@@ -197,9 +196,7 @@ impl SamplingOptions {
 
     pub fn settings(&self, scene: &Scene, spp: u32, progress: bool) -> RenderSettings {
         let (look, _) = self.look(scene);
-        let integrator = self
-            .integrator
-            .unwrap_or_else(|| look.estimator.integrator());
+        let integrator = self.integrator.unwrap_or(look.integrator);
         // Ray casting through pixel centres is deterministic: one sample.
         let spp = if integrator == Integrator::RayCast && look.pixels == PixelSampling::Centre {
             1
@@ -220,6 +217,7 @@ impl SamplingOptions {
             clamp: self.clamp,
             light_paths: !self.no_light_paths,
             look,
+            dispersion: self.scene.dispersion,
         }
     }
 }
@@ -310,31 +308,13 @@ fn parse_dialect(name: &str) -> Result<Dialect, String> {
 }
 
 /// Loads a scene for rendering, printing its warnings (fields that are
-/// not rendered among them), with `--dispersion` applied.
+/// not rendered among them).
 pub fn load_for_render(path: &Path, options: &SceneOptions) -> Result<Scene, String> {
-    let mut scene = load_scene(path, &options.load_options()).map_err(|e| e.to_string())?;
+    let scene = load_scene(path, &options.load_options()).map_err(|e| e.to_string())?;
     for warning in &scene.warnings {
         eprintln!("warning: {warning}");
     }
-    if let Some(dispersion) = options.dispersion {
-        apply_dispersion(&mut scene, dispersion);
-    }
     Ok(scene)
-}
-
-/// Gives the refractive materials of `scene` the indices of `--dispersion`
-/// (a warning when there are none). The scene's hash changes with them, so
-/// that parts of renders with and without the flag do not merge.
-pub fn apply_dispersion(scene: &mut Scene, dispersion: Dispersion) {
-    if apply_channels(&mut scene.materials, dispersion) == 0 {
-        eprintln!("warning: '--dispersion' is not rendered: no material refracts");
-        return;
-    }
-    if let Dispersion::Channels(indices) = dispersion {
-        let mut bytes = scene.load.source_hash.to_le_bytes().to_vec();
-        bytes.extend(indices.iter().flat_map(|index| index.to_le_bytes()));
-        scene.load.source_hash = pathtracer::scene::fnv1a(&bytes);
-    }
 }
 
 fn parse_dispersion(text: &str) -> Result<Dispersion, String> {
@@ -360,19 +340,14 @@ fn parse_dispersion(text: &str) -> Result<Dispersion, String> {
     }
 }
 
-/// `scene` adapted to the look of `settings` (see [`Look::adapt`]) and its
-/// world as the look renders it (its planes).
-///
-/// [`Look::adapt`]: crate::look::Look::adapt
-pub fn prepare(scene: &mut Scene, settings: &RenderSettings) -> World {
-    settings.look.adapt(scene);
-    for note in pathtracer::integrator::media_notes(scene, settings.integrator) {
-        eprintln!("note: {note}");
-    }
-    for notice in pathtracer::integrator::dispersion_notes(scene, settings.integrator) {
+/// The render-time scene of `scene` for `settings`, with what it says
+/// about the render (see [`RenderScene::notices`]) printed.
+pub fn render_scene(scene: Scene, settings: &RenderSettings) -> RenderScene {
+    let scene = RenderScene::build(scene, &settings.scene());
+    for notice in scene.notices(settings.integrator) {
         eprintln!("{notice}");
     }
-    World::build_with(scene, settings.look.shape_rules())
+    scene
 }
 
 /// `output/<scene name><suffix>`.

@@ -1,6 +1,5 @@
 //! `pathtracer render`: a scene file to an image, with a one-line summary.
 
-use crate::commands::prepare;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -13,15 +12,15 @@ use pathtracer::checkpoint::{
 use pathtracer::image_io::{
     PendingFile, check_writable, commit_together, encode_image, is_hdr, refuse_inputs,
 };
-use pathtracer::integrator::{Integrator, SceneView, split};
+use pathtracer::integrator::{Integrator, split};
 use pathtracer::interrupt;
-use pathtracer::render::{Progress, RenderSettings, Renderer, SamplingPlan};
+use pathtracer::render::{Progress, RenderSettings, Renderer};
 use pathtracer::render_job::{Crop, JobHeader};
+use pathtracer::render_scene::RenderScene;
 use pathtracer::scene::model::Scene;
-use pathtracer::world::World;
 
 use super::sidecar::{Made, sidecar_json, sidecar_path};
-use super::{EncodingOptions, SamplingOptions, default_output, load_for_render};
+use super::{EncodingOptions, SamplingOptions, default_output, load_for_render, render_scene};
 
 #[derive(Args)]
 pub struct RenderArgs {
@@ -119,7 +118,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         true => Some(PendingFile::reserve(&sidecar_path(&output))?),
         false => None,
     };
-    let mut scene = load_for_render(&args.scene, &args.sampling.scene)?;
+    let scene = load_for_render(&args.scene, &args.sampling.scene)?;
     let outputs: Vec<&PendingFile> = std::iter::once(&image_file)
         .chain(sidecar_file.as_ref())
         .collect();
@@ -127,7 +126,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let settings = args.sampling.settings(&scene, args.spp, !args.quiet);
     check_writable(&output, settings.width as usize, settings.height as usize)?;
     let world_start = Instant::now();
-    let world = prepare(&mut scene, &settings);
+    let scene = render_scene(scene, &settings);
     let world_seconds = world_start.elapsed().as_secs_f64();
     let rule = StoppingRule {
         target_error: args.target_error,
@@ -135,8 +134,8 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     };
     let header = JobHeader::new(
         &args.scene.display().to_string(),
-        scene.load.source_hash,
-        world.triangle_count() as u64,
+        scene.description().load.source_hash,
+        scene.world().triangle_count() as u64,
         &settings,
         args.sampling.scene.missing_assets.name(),
         Crop::full(settings.width, settings.height),
@@ -164,22 +163,17 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let _graceful = interrupt::Graceful::start();
     let (stats, written) = if adaptive {
         let progress = progress_for(&film, settings.spp, rule);
-        let renderer = Renderer::new(&scene, &world, &settings, progress)?;
+        let renderer = Renderer::new(&scene, &settings, progress)?;
         let stats = render_adaptive(&renderer, rule, &mut film)?;
         (stats, CheckpointStats::default())
     } else {
         let samples = checkpoints.samples();
-        let renderer = Renderer::new(
-            &scene,
-            &world,
-            &settings,
-            Progress::new(samples.count(&film), None),
-        )?;
+        let renderer = Renderer::new(&scene, &settings, Progress::new(samples.count(&film), None))?;
         render_resumable(&renderer, &mut film, &checkpoints)?
     };
     let image = film.to_image();
     if args.stats {
-        print_phases(&scene, &world, &settings, world_seconds, stats.seconds);
+        print_phases(&scene, &settings, world_seconds, stats.seconds);
     }
     image_file.write(&encode_image(&output, &image, &encoding)?)?;
     let pixels = (settings.width as u64 * settings.height as u64).max(1);
@@ -205,7 +199,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         // The image is there: the checkpoint it continued has served.
         checkpoints.remove();
     }
-    let (look, why) = args.sampling.look(&scene);
+    let (look, why) = args.sampling.look(scene.description());
     let checkpoint_note = match written.written {
         0 => String::new(),
         n => format!(", {n} checkpoints written in {:.2} s", written.seconds),
@@ -257,14 +251,14 @@ pub fn scene_inputs<'a>(scene_file: &'a Path, scene: &'a Scene) -> Vec<(&'a str,
 
 /// `--stats`: the time of each phase, and the machinery a scene did not need.
 fn print_phases(
-    scene: &Scene,
-    world: &World,
+    scene: &RenderScene,
     settings: &RenderSettings,
     world_seconds: f64,
     render_seconds: f64,
 ) {
-    let load = &scene.load;
-    let plan = SamplingPlan::for_scene(scene);
+    let load = &scene.description().load;
+    let world = scene.world();
+    let plan = scene.plan();
     let skipped = |done: bool| {
         if done {
             ""
@@ -308,10 +302,13 @@ fn print_phases(
             "off (nothing moves)"
         }
     );
-    let view = SceneView::with_look(scene, world, settings.look);
     say!(
         "light subpaths  {}",
-        match (settings.integrator, settings.light_paths, view.light_paths) {
+        match (
+            settings.integrator,
+            settings.light_paths,
+            scene.light_paths()
+        ) {
             (Integrator::Original, _, _) => "off (original estimator)",
             (_, false, _) => "off (--no-light-paths)",
             _ if settings.look.one_sided_planes => "off (the look's planes are one-sided)",
@@ -319,8 +316,8 @@ fn print_phases(
             (_, true, true) => "on (caustics by light tracing and connections)",
         }
     );
-    let split = match (settings.light_paths, view.light_paths) {
-        _ if scene.has_media() || settings.integrator != Integrator::Path => {
+    let split = match (settings.light_paths, scene.light_paths()) {
+        _ if scene.media() || settings.integrator != Integrator::Path => {
             "off (path integrator without media only)".to_string()
         }
         (false, _) => "off (--no-light-paths)".to_string(),

@@ -15,43 +15,24 @@ use std::f64::consts::PI;
 
 use crate::bsdf::Bsdf;
 use crate::color::Color;
-use crate::look::PointLights;
-use crate::math::{Point3, Ray, Vec3};
-use crate::scene::model::{Light, Scene};
+use crate::math::{Point3, Vec3};
+use crate::render_scene::RenderScene;
+use crate::scene::model::Light;
 use crate::shading::Shading;
-use crate::world::World;
 
-/// The lights that are sampled by shadow rays (see `SceneView::direct_lights`),
-/// by the look's rule: in scenes without emitters (the PA1 scenes), always
-/// (cyy's renderer adds every light), or never.
-pub fn direct_lights(scene: &Scene, rule: PointLights) -> &[Light] {
-    match rule {
-        PointLights::Never => return &[],
-        PointLights::Always => return &scene.lights,
-        PointLights::WithoutEmitters => {}
-    }
-    let mut has_emitter = false;
-    scene.root.for_each_leaf(&mut |leaf| {
-        for m in leaf.materials().filter_map(|i| scene.materials.get(i)) {
-            has_emitter |= !m.emission.is_black();
-        }
-    });
-    if has_emitter { &[] } else { &scene.lights }
-}
-
-/// Radiance reflected towards `wo` from the point and directional lights,
-/// the light's colour and the BSDF each as the path's `spectrum` sees them
-/// (the caller multiplies by the path throughput).
+/// Radiance reflected towards `wo` from the point and directional lights
+/// of `scene` (its direct lights), the light's colour and the BSDF each as
+/// the path's `spectrum` sees them (the caller multiplies by the path
+/// throughput).
 pub fn direct(
-    world: &World,
-    lights: &[Light],
+    scene: &RenderScene,
     at: &Shading,
     bsdf: &Bsdf,
     wo: &Vec3,
     spectrum: &PathSpectrum,
 ) -> Color {
     let mut sum = Color::BLACK;
-    for light in lights {
+    for light in scene.direct_lights() {
         let Some(LightRay {
             to_light,
             distance,
@@ -67,18 +48,14 @@ pub fn direct(
         if reflected.is_black() {
             continue;
         }
-        let origin = at.spawn_origin(&to_light);
-        let shadow = Ray::new(origin, to_light, 0.0);
-        if world.occluded(&shadow, 0.0, distance * SHADOW_REACH) {
+        // At shutter time 0, whatever the path's (as the original).
+        if !scene.unoccluded(at.spawn_origin(&to_light), to_light, distance, 0.0) {
             continue;
         }
         sum += spectrum.factor(reflected) * spectrum.factor(color) * PI;
     }
     sum
 }
-
-/// The fraction of the distance to a light that its shadow ray covers.
-pub const SHADOW_REACH: f64 = 1.0 - 1e-9;
 
 /// The way from a lit point to a point, spot or directional light.
 pub struct LightRay {
@@ -138,31 +115,44 @@ mod tests {
     use crate::bsdf::lambert::Lambert;
     use crate::bsdf::phong::Phong;
     use crate::bsdf::{Bsdf, Lobe, LobeSet, Rules};
+    use crate::look::Look;
     use crate::math::Point3;
-    use crate::scene::model::Material;
+    use crate::render_scene::SceneSettings;
+    use crate::scene::model::{Object, Scene};
 
-    /// The PA1 framework's term for a Lambert surface, and the energy-
-    /// normalised Phong highlight on top, from a directional light.
-    #[test]
-    fn point_and_directional_lights_reflect_by_the_bsdf() {
-        let world = World::from_primitives(Vec::new());
-        let material = Material::default();
+    /// An empty scene lit by `lights` (added by shadow rays: it has no
+    /// emitter).
+    fn lit_by(lights: Vec<Light>) -> RenderScene {
+        let mut scene = Scene::new(Vec::new(), Object::Group(Vec::new()));
+        scene.lights = lights;
+        let settings = SceneSettings::defaults(&scene, Look::ORIGINAL);
+        RenderScene::build(scene, &settings)
+    }
+
+    /// The origin of an empty scene, facing +z.
+    fn origin_of(scene: &RenderScene) -> Shading<'_> {
         let normal = Vec3::z();
-        let at = Shading {
+        Shading {
             point: Point3::zeros(),
-            material: &material,
-            material_index: 0,
+            material: scene.material(0),
             color: Color::WHITE,
             geometric: normal,
             normal,
             entering: true,
             leaves_from_point: false,
-        };
+        }
+    }
+
+    /// The PA1 framework's term for a Lambert surface, and the energy-
+    /// normalised Phong highlight on top, from a directional light.
+    #[test]
+    fn point_and_directional_lights_reflect_by_the_bsdf() {
         let to_light = Vec3::new(0.6, 0.0, 0.8);
-        let light = Light::Directional {
+        let scene = lit_by(vec![Light::Directional {
             direction: -to_light,
             color: Color::gray(2.0),
-        };
+        }]);
+        let at = origin_of(&scene);
         let wo = Vec3::new(-0.6, 0.0, 0.8);
         let (kd, ks, n) = (0.5, 0.3, 20.0);
         let mut set = LobeSet::default();
@@ -171,15 +161,8 @@ mod tests {
         };
         set.push(Lobe::Lambert(lambert), 1.0, false);
         let rules = Rules::default();
-        let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, wo.z, rules);
-        let diffuse_only = direct(
-            &world,
-            std::slice::from_ref(&light),
-            &at,
-            &bsdf,
-            &wo,
-            &PathSpectrum::Rgb,
-        );
+        let bsdf = Bsdf::new(&set, Color::WHITE, &at.normal, true, wo.z, rules);
+        let diffuse_only = direct(&scene, &at, &bsdf, &wo, &PathSpectrum::Rgb);
         // albedo * color * cos, the framework's term.
         assert!((diffuse_only.r - kd * 2.0 * 0.8).abs() < 1e-12);
         let phong = Phong {
@@ -187,8 +170,8 @@ mod tests {
             exponent: n,
         };
         set.push(Lobe::Phong(phong), 1.0, false);
-        let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, wo.z, rules);
-        let with_highlight = direct(&world, &[light], &at, &bsdf, &wo, &PathSpectrum::Rgb);
+        let bsdf = Bsdf::new(&set, Color::WHITE, &at.normal, true, wo.z, rules);
+        let with_highlight = direct(&scene, &at, &bsdf, &wo, &PathSpectrum::Rgb);
         // wo is the mirror of the light direction: cos(alpha) = 1.
         let highlight = ks * (n + 2.0) / 2.0 * 0.8 * 2.0;
         assert!((with_highlight.r - diffuse_only.r - highlight).abs() < 1e-9);
@@ -198,48 +181,31 @@ mod tests {
     /// axis, with no other cut-off.
     #[test]
     fn spot_lights_fall_off_as_a_power_of_the_cosine_about_their_axis() {
-        let world = World::from_primitives(Vec::new());
-        let material = Material::default();
-        let normal = Vec3::z();
-        let at = Shading {
-            point: Point3::zeros(),
-            material: &material,
-            material_index: 0,
-            color: Color::WHITE,
-            geometric: normal,
-            normal,
-            entering: true,
-            leaves_from_point: false,
-        };
         let mut set = LobeSet::default();
         let lambert = Lambert {
             albedo: Color::WHITE,
         };
         set.push(Lobe::Lambert(lambert), 1.0, false);
         let wo = Vec3::z();
-        let bsdf = Bsdf::new(&set, Color::WHITE, &normal, true, wo.z, Rules::default());
         let position = Point3::new(0.0, 0.0, 2.0);
+        let radiance = |light: Light| {
+            let scene = lit_by(vec![light]);
+            let at = origin_of(&scene);
+            let bsdf = Bsdf::new(&set, Color::WHITE, &at.normal, true, wo.z, Rules::default());
+            direct(&scene, &at, &bsdf, &wo, &PathSpectrum::Rgb).r
+        };
         let lit = |direction: Vec3, exponent: f64| {
-            let spot = Light::Spot {
+            radiance(Light::Spot {
                 position,
                 direction: direction.normalize(),
                 color: Color::gray(3.0),
                 exponent,
-            };
-            direct(&world, &[spot], &at, &bsdf, &wo, &PathSpectrum::Rgb).r
+            })
         };
-        let point = direct(
-            &world,
-            &[Light::Point {
-                position,
-                color: Color::gray(3.0),
-            }],
-            &at,
-            &bsdf,
-            &wo,
-            &PathSpectrum::Rgb,
-        )
-        .r;
+        let point = radiance(Light::Point {
+            position,
+            color: Color::gray(3.0),
+        });
         assert!(
             (point - 3.0).abs() < 1e-12,
             "albedo * colour * cos: {point}"

@@ -12,36 +12,35 @@ use crate::color::Color;
 use crate::look::RayOrigins;
 use crate::math::Ray;
 use crate::sampler::Sampler;
-use crate::shading::Shading;
 use crate::spectral::PathSpectrum;
 
-use super::SceneView;
 use super::scatter::{bsdf_at, miss, pa1_lights, sample};
+use crate::render_scene::RenderScene;
 
 /// Scattering vertices of the original before a path ends.
 pub const MAX_DEPTH: u32 = 5;
 
-pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color {
+pub fn radiance(scene: &RenderScene, mut ray: Ray, sampler: &mut Sampler) -> Color {
     let mut result = Color::BLACK;
     let mut throughput = Color::WHITE;
     let mut depth = 0;
     loop {
-        let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
-            result += miss(view, depth, throughput);
+        let Some(hit) = scene.intersect(&ray) else {
+            result += miss(scene, depth, throughput);
             break;
         };
-        let at = Shading::new(view.scene, &hit, &ray);
+        let at = scene.shade(&hit, &ray);
         result += throughput * at.material.emission;
         depth += 1;
-        if depth > view.max_depth {
+        if depth > scene.max_depth() {
             break;
         }
         let wo = -ray.direction;
-        let bsdf = bsdf_at(view, &at, &wo, GlassChoice::Smallpt);
+        let bsdf = bsdf_at(scene, &at, &wo, GlassChoice::Smallpt);
         if bsdf.is_black() {
             break;
         }
-        result += throughput * pa1_lights(view, &at, &bsdf, &wo, &PathSpectrum::Rgb);
+        result += throughput * pa1_lights(scene, &at, &bsdf, &wo, &PathSpectrum::Rgb);
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
             break;
         };
@@ -50,7 +49,7 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
             break;
         }
         let direction = scattered.wi;
-        let origin = match view.look.ray_origins {
+        let origin = match scene.look().ray_origins {
             RayOrigins::Offset => at.spawn_origin(&direction),
             RayOrigins::AtHit => ray.at(hit.t),
         };

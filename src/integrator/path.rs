@@ -43,17 +43,14 @@ use crate::spectral::PathSpectrum;
 use super::caustics::{self, CausticVertex};
 use super::scatter::{bsdf_at, emitter_choice, miss, pa1_lights, sample};
 use super::split;
-use super::{CameraSample, SceneView, Splats};
+use super::{CameraSample, Splats};
+use crate::render_scene::RenderScene;
 
 /// Scattering vertices after which Russian roulette may end a path. Within
 /// the original's five vertices every continuation pays for itself (ending
 /// paths from the third vertex cost 5-17% efficiency on the report scenes);
 /// roulette protects longer `--max-depth` paths.
 pub(super) const ROULETTE_DEPTH: u32 = 5;
-
-/// Shadow rays stop this fraction short of the light point, so that they do
-/// not find the emitter itself.
-pub(super) const SHADOW_SHORTENING: f64 = 1e-7;
 
 /// Where the current ray left a vertex by a continuous lobe: what MIS needs
 /// to weight the emission the ray finds.
@@ -91,16 +88,16 @@ enum Edge {
 }
 
 impl Edge {
-    fn density(&self, view: &SceneView, sample: &CameraSample) -> Option<f64> {
+    fn density(&self, scene: &RenderScene, sample: &CameraSample) -> Option<f64> {
         match *self {
             Edge::Bounce(density) => Some(density),
-            Edge::Camera { point, normal } => caustics::camera_edge(view, sample, &point, &normal),
+            Edge::Camera { point, normal } => caustics::camera_edge(scene, sample, &point, &normal),
         }
     }
 }
 
 pub fn radiance(
-    view: &SceneView,
+    scene: &RenderScene,
     mut ray: Ray,
     sample_of: &CameraSample,
     sampler: &mut Sampler,
@@ -109,7 +106,7 @@ pub fn radiance(
     let mut result = Color::BLACK;
     // RGB until a dispersive dielectric splits the path (see `spectral`),
     // or one wavelength from the start in Cambrian's look.
-    let (mut spectrum, mut throughput) = if view.cambrian_wavelengths {
+    let (mut spectrum, mut throughput) = if scene.cambrian_wavelengths() {
         PathSpectrum::cambrian(sampler.next_f64(), sampler.next_f64())
     } else {
         (PathSpectrum::Rgb, Color::WHITE)
@@ -127,51 +124,52 @@ pub fn radiance(
     let mut delta_run = 0;
     // The light subpath of the caustic connections; every camera sample
     // traces one (light tracing divides by their number).
-    let light_path: Option<CausticVertex> = if view.light_paths {
-        let max_chain = view.max_depth.saturating_sub(1);
-        caustics::trace(view, ray.time, sampler, max_chain, splats)
+    let light_path: Option<CausticVertex> = if scene.light_paths() {
+        let max_chain = scene.max_depth().saturating_sub(1);
+        caustics::trace(scene, ray.time, sampler, max_chain, splats)
     } else {
         None
     };
     loop {
-        let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
+        let Some(hit) = scene.intersect(&ray) else {
             result += if spectrum.is_rgb() {
-                miss(view, depth, throughput)
+                miss(scene, depth, throughput)
             } else {
-                miss_split(view, depth, throughput, &spectrum)
+                miss_split(scene, depth, throughput, &spectrum)
             };
             break;
         };
-        let at = Shading::new(view.scene, &hit, &ray);
+        let at = scene.shade(&hit, &ray);
         let material = at.material;
         if !material.emission.is_black() {
             let weight = match (origin, track) {
-                (None, Some(track)) if track.chain > 0 => match track.edge.density(view, sample_of)
-                {
-                    Some(edge) => {
-                        let density =
-                            caustics::emission_density(view, ray.time, &hit, &-ray.direction);
-                        caustics::path_weight(edge, track.shading_ratio, density)
+                (None, Some(track)) if track.chain > 0 => {
+                    match track.edge.density(scene, sample_of) {
+                        Some(edge) => {
+                            let density =
+                                caustics::emission_density(scene, ray.time, &hit, &-ray.direction);
+                            caustics::path_weight(edge, track.shading_ratio, density)
+                        }
+                        None => 1.0,
                     }
-                    None => 1.0,
-                },
+                }
                 (None, _) if delta_run <= split::MAX_CHAIN => chain_share,
                 (None, _) => 1.0,
                 (Some(from), _) => {
-                    let light_pdf = view.emitters.pdf(&from.point, ray.time, &hit);
+                    let light_pdf = scene.emitters().pdf(&from.point, ray.time, &hit);
                     power_heuristic(from.pdf, light_pdf)
                 }
             };
             result += throughput * spectrum.factor(material.emission) * weight;
         }
         depth += 1;
-        if depth > view.max_depth {
+        if depth > scene.max_depth() {
             break;
         }
         let wo = -ray.direction;
         // The lobes at the path's wavelength, when they depend on it.
         let dispersed;
-        let mut bsdf = bsdf_at(view, &at, &wo, GlassChoice::Fresnel);
+        let mut bsdf = bsdf_at(scene, &at, &wo, GlassChoice::Fresnel);
         if bsdf.is_black() {
             break;
         }
@@ -179,9 +177,9 @@ pub fn radiance(
             dispersed = disperse(&bsdf, &mut spectrum, &mut throughput, sampler);
             bsdf = bsdf.with_set(&dispersed);
         }
-        result += throughput * pa1_lights(view, &at, &bsdf, &wo, &spectrum);
-        if depth == view.max_depth
-            && view.light_sample_ends_paths
+        result += throughput * pa1_lights(scene, &at, &bsdf, &wo, &spectrum);
+        if depth == scene.max_depth()
+            && scene.light_sample_ends_paths()
             && bsdf.lambert().is_some()
             && bsdf.smooth_probability() >= 1.0
         {
@@ -189,7 +187,7 @@ pub fn radiance(
             // the light sample then counts alone (weight 1, no MIS).
             result += throughput
                 * light_sample(
-                    view, &at, &bsdf, &wo, 1.0, ray.time, sampler, &spectrum, false,
+                    scene, &at, &bsdf, &wo, 1.0, ray.time, sampler, &spectrum, false,
                 );
             break;
         }
@@ -198,10 +196,12 @@ pub fn radiance(
         };
         // Where the ray that found this vertex came from (for the caustic track).
         let arrived_from = origin.take();
-        let split_here = split::splits(view, depth, arrived_from.is_none());
+        let split_here = split::splits(scene, depth, arrived_from.is_none());
         if split_here && bsdf.smooth_probability() > 0.0 {
             result += throughput
-                * split::chain_emission(view, &at, &bsdf, &wo, depth, ray.time, sampler, &spectrum);
+                * split::chain_emission(
+                    scene, &at, &bsdf, &wo, depth, ray.time, sampler, &spectrum,
+                );
         }
         let direction = scattered.wi;
         if scattered.delta {
@@ -215,16 +215,16 @@ pub fn radiance(
             let smooth = bsdf.smooth_probability();
             result += throughput
                 * light_sample(
-                    view, &at, &bsdf, &wo, smooth, ray.time, sampler, &spectrum, true,
+                    scene, &at, &bsdf, &wo, smooth, ray.time, sampler, &spectrum, true,
                 );
             let lambert = bsdf.lambert();
             if let Some(f) = lambert
-                && let Some(y) = light_path.filter(|y| depth + 1 + y.chain <= view.max_depth)
+                && let Some(y) = light_path.filter(|y| depth + 1 + y.chain <= scene.max_depth())
             {
-                result += throughput * caustics::connect(view, &at, f / smooth, &y);
+                result += throughput * caustics::connect(scene, &at, f / smooth, &y);
             }
             track = match arrived_from {
-                _ if !view.light_paths || lambert.is_none() => None,
+                _ if !scene.light_paths() || lambert.is_none() => None,
                 Some(from) if from.lambert => caustic_track(&from, &at, &ray, &direction),
                 None if depth == 1 => camera_track(&at, &direction),
                 _ => None,
@@ -331,9 +331,14 @@ fn disperse(
 
 /// What a ray of a split path that finds nothing adds: the background as
 /// the path's wavelength or channel sees it.
-fn miss_split(view: &SceneView, depth: u32, throughput: Color, spectrum: &PathSpectrum) -> Color {
-    let background = view.scene.background;
-    match view.look.miss {
+fn miss_split(
+    scene: &RenderScene,
+    depth: u32,
+    throughput: Color,
+    spectrum: &PathSpectrum,
+) -> Color {
+    let background = scene.background();
+    match scene.look().miss {
         Miss::Weighted => throughput * spectrum.factor(background),
         Miss::Unweighted => spectrum.seen(background),
         // A split path has scattered, so depth > 0.
@@ -351,7 +356,7 @@ fn miss_split(view: &SceneView, depth: u32, throughput: Color, spectrum: &PathSp
 /// throughput.
 #[allow(clippy::too_many_arguments)]
 fn light_sample(
-    view: &SceneView,
+    scene: &RenderScene,
     at: &Shading,
     bsdf: &Bsdf,
     wo: &Vec3,
@@ -361,23 +366,20 @@ fn light_sample(
     spectrum: &PathSpectrum,
     mis: bool,
 ) -> Color {
-    if view.emitters.is_empty() {
+    if scene.emitters().is_empty() {
         return Color::BLACK;
     }
-    let select = emitter_choice(view, sampler);
+    let select = emitter_choice(scene, sampler);
     let u = sampler.next_2d();
-    let Some(light) = view.emitters.sample(&at.point, time, select, u) else {
+    let Some(light) = scene.emitters().sample(&at.point, time, select, u) else {
         return Color::BLACK;
     };
     let reflected = bsdf.eval(wo, &light.direction);
     if reflected.is_black() {
         return Color::BLACK;
     }
-    let shadow = Ray::new(at.spawn_origin(&light.direction), light.direction, time);
-    if view
-        .world
-        .occluded(&shadow, 0.0, light.distance * (1.0 - SHADOW_SHORTENING))
-    {
+    let origin = at.spawn_origin(&light.direction);
+    if !scene.unoccluded(origin, light.direction, light.distance, time) {
         return Color::BLACK;
     }
     let weight = if mis {

@@ -12,15 +12,14 @@
 use crate::color::Color;
 use crate::math::{Ray, Vec3};
 use crate::scene::model::Light;
-use crate::shading::Shading;
 
-use super::SceneView;
+use crate::render_scene::RenderScene;
 
-pub fn radiance(view: &SceneView, ray: Ray) -> Color {
-    let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) else {
-        return view.scene.background;
+pub fn radiance(scene: &RenderScene, ray: Ray) -> Color {
+    let Some(hit) = scene.intersect(&ray) else {
+        return scene.background();
     };
-    let at = Shading::new(view.scene, &hit, &ray);
+    let at = scene.shade(&hit, &ray);
     let n = at.normal;
     let v = -ray.direction;
     let (ks, exponent) = at
@@ -28,7 +27,7 @@ pub fn radiance(view: &SceneView, ray: Ray) -> Color {
         .phong
         .map_or((Color::BLACK, 0.0), |p| (p.color, p.exponent));
     let mut sum = at.material.emission;
-    for light in &view.scene.lights {
+    for light in scene.lights() {
         let (l, color) = match light {
             Light::Point { position, color } => match (position - at.point).try_normalize(1e-300) {
                 Some(l) => (l, *color),

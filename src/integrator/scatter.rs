@@ -2,39 +2,32 @@
 //! contract: build the BSDF of a hit, sample it spending sample dimensions
 //! only on what it reads, pick an emitter, and add the PA1 lights.
 
-use crate::bsdf::{Bsdf, BsdfSample, GlassChoice, LobeSet, Rules};
+use crate::bsdf::{Bsdf, BsdfSample, GlassChoice, Rules};
 use crate::color::Color;
 use crate::look::Miss;
 use crate::math::Vec3;
+use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
 use crate::shading::Shading;
 use crate::spectral::PathSpectrum;
 
-use super::{SceneView, lights};
+use super::lights;
 
-/// The BSDF of `at` for light leaving towards `wo`, with the view's
+/// The BSDF of `at` for light leaving towards `wo`, with the look's
 /// conventions and the estimator's way of choosing between reflection and
 /// refraction.
 #[inline(always)]
-pub fn bsdf_at<'v>(view: &'v SceneView, at: &Shading, wo: &Vec3, glass: GlassChoice) -> Bsdf<'v> {
+pub fn bsdf_at<'a>(
+    scene: &RenderScene,
+    at: &Shading<'a>,
+    wo: &Vec3,
+    glass: GlassChoice,
+) -> Bsdf<'a> {
     let rules = Rules {
-        fresnel: view.look.fresnel,
+        fresnel: scene.look().fresnel,
         glass,
     };
-    let set = lobe_set(view, at.material_index);
-    if view.look.texture_times_color && at.material.texture.is_some() {
-        let cos_o = at.normal.dot(wo);
-        let color = at.color * at.material.color;
-        return Bsdf::new(set, color, &at.normal, at.entering, cos_o, rules);
-    }
-    at.bsdf(set, wo, rules)
-}
-
-/// The lobes of material `index` (the default material's for a hit
-/// without one).
-#[inline(always)]
-pub fn lobe_set<'v>(view: &'v SceneView, index: usize) -> &'v LobeSet {
-    view.lobe_sets.get(index).unwrap_or(&view.default_lobes)
+    at.bsdf(wo, rules)
 }
 
 /// A direction from `bsdf` for `wo`: the lobe choice and the direction are
@@ -57,8 +50,8 @@ pub fn sample(bsdf: &Bsdf, wo: &Vec3, sampler: &mut Sampler) -> Option<BsdfSampl
 
 /// The number that picks an emitter for a light sample or light subpath: a
 /// sample dimension only when there is more than one emitter to pick.
-pub fn emitter_choice(view: &SceneView, sampler: &mut Sampler) -> f64 {
-    if view.emitters.len() > 1 {
+pub fn emitter_choice(scene: &RenderScene, sampler: &mut Sampler) -> f64 {
+    if scene.emitters().len() > 1 {
         sampler.next_f64()
     } else {
         0.5
@@ -68,25 +61,25 @@ pub fn emitter_choice(view: &SceneView, sampler: &mut Sampler) -> f64 {
 /// Radiance of the PA1 point and directional lights at this vertex (the
 /// caller multiplies by the throughput).
 pub fn pa1_lights(
-    view: &SceneView,
+    scene: &RenderScene,
     at: &Shading,
     bsdf: &Bsdf,
     wo: &Vec3,
     spectrum: &PathSpectrum,
 ) -> Color {
-    if view.direct_lights.is_empty() {
+    if scene.direct_lights().is_empty() {
         Color::BLACK
     } else {
-        lights::direct(view.world, view.direct_lights, at, bsdf, wo, spectrum)
+        lights::direct(scene, at, bsdf, wo, spectrum)
     }
 }
 
 /// What a ray that finds nothing adds, after `depth` scattering vertices
 /// with `throughput` (the look's rule).
 #[inline]
-pub fn miss(view: &SceneView, depth: u32, throughput: Color) -> Color {
-    let background = view.scene.background;
-    match view.look.miss {
+pub fn miss(scene: &RenderScene, depth: u32, throughput: Color) -> Color {
+    let background = scene.background();
+    match scene.look().miss {
         Miss::CameraBackground if depth == 0 => throughput * background,
         Miss::CameraBackground | Miss::Black => Color::BLACK,
         Miss::Weighted => throughput * background,

@@ -28,9 +28,9 @@ use crate::sampler::Sampler;
 use crate::shading::Shading;
 use crate::spectral::PathSpectrum;
 
-use super::SceneView;
 use super::path::ROULETTE_DEPTH;
-use super::scatter::{bsdf_at, lobe_set, sample};
+use super::scatter::{bsdf_at, sample};
+use crate::render_scene::RenderScene;
 
 /// Bounces that estimate the chain emission of a split vertex.
 pub const SPLIT: u32 = 8;
@@ -49,11 +49,11 @@ const PROBE_SALT: u64 = 0x5B11_7C0A_5710_9E00;
 /// the vertices before Russian roulette may end a path (all of the
 /// original's but its last, which has nothing left to find).
 #[inline]
-pub fn splits(view: &SceneView, depth: u32, arrived_by_delta: bool) -> bool {
-    view.light_paths
+pub fn splits(scene: &RenderScene, depth: u32, arrived_by_delta: bool) -> bool {
+    scene.light_paths()
         && arrived_by_delta
         && depth > 1
-        && depth < view.max_depth
+        && depth < scene.max_depth()
         && depth < ROULETTE_DEPTH
 }
 
@@ -63,7 +63,7 @@ pub fn splits(view: &SceneView, depth: u32, arrived_by_delta: bool) -> bool {
 /// the path's `spectrum` sees it; the caller multiplies by the throughput.
 #[allow(clippy::too_many_arguments)]
 pub fn chain_emission(
-    view: &SceneView,
+    scene: &RenderScene,
     at: &Shading,
     bsdf: &Bsdf,
     wo: &Vec3,
@@ -83,10 +83,10 @@ pub fn chain_emission(
         }
         let weight = spectrum.factor(bounce.weight);
         let ray = Ray::new(at.spawn_origin(&bounce.wi), bounce.wi, time);
-        if !view.casters.may_hit(&ray) {
+        if !scene.casters().may_hit(&ray) {
             continue;
         }
-        sum += follow_chain(view, ray, weight, depth, spectrum, &mut sampler).emission;
+        sum += follow_chain(scene, ray, weight, depth, spectrum, &mut sampler).emission;
     }
     sum / SPLIT as f64
 }
@@ -105,7 +105,7 @@ struct Chain {
 /// the chain starts, has no delta vertex before it (its emission is the
 /// light sample's business).
 fn follow_chain(
-    view: &SceneView,
+    scene: &RenderScene,
     mut ray: Ray,
     mut weight: Color,
     depth: u32,
@@ -117,21 +117,23 @@ fn follow_chain(
         delta_vertices: 0,
     };
     let mut hit_depth = depth + 1;
-    while let Some(hit) = view.world.intersect(&ray, 0.0, f64::INFINITY) {
-        let material = view.scene.materials.get(hit.material);
-        let emission = material.map_or(Color::BLACK, |m| m.emission);
+    while let Some(hit) = scene.intersect(&ray) {
+        let material = scene.material(hit.material);
+        let emission = material.emission;
         if found.delta_vertices > 0 && !emission.is_black() {
             found.emission += weight * spectrum.factor(emission);
         }
         // Most probes end here, on a surface without delta lobes, for the
         // price of the ray.
-        let lobes = lobe_set(view, hit.material);
-        if hit_depth > view.max_depth || found.delta_vertices == MAX_CHAIN || !lobes.has_delta() {
+        if hit_depth > scene.max_depth()
+            || found.delta_vertices == MAX_CHAIN
+            || !material.lobes.has_delta()
+        {
             break;
         }
-        let here = Shading::new(view.scene, &hit, &ray);
+        let here = scene.shade(&hit, &ray);
         let towards = -ray.direction;
-        let here_bsdf = bsdf_at(view, &here, &towards, GlassChoice::Fresnel);
+        let here_bsdf = bsdf_at(scene, &here, &towards, GlassChoice::Fresnel);
         let Some(next) = sample(&here_bsdf, &towards, sampler) else {
             break;
         };
@@ -152,10 +154,12 @@ fn follow_chain(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::integrator::original::MAX_DEPTH;
+    use crate::look::Look;
     use crate::math::Point3;
+    use crate::render_scene::SceneSettings;
     use crate::sampler::SamplerKind;
     use crate::scene::model::{Material, Object, Scene};
-    use crate::world::World;
 
     const ALBEDO: f64 = 0.6;
     const MIRROR: f64 = 0.9;
@@ -205,19 +209,27 @@ mod tests {
         Scene::new(materials, Object::Group(objects))
     }
 
+    /// `scene` in the original look, with paths of `max_depth` vertices.
+    fn ready(scene: Scene, max_depth: u32) -> RenderScene {
+        let settings = SceneSettings {
+            max_depth,
+            ..SceneSettings::defaults(&scene, Look::ORIGINAL)
+        };
+        RenderScene::build(scene, &settings)
+    }
+
     /// The probes' estimate from the top of the ball, as hit `depth`.
-    fn probes(scene: &Scene, depth: u32) -> Color {
-        let world = World::build(scene);
-        let view = SceneView::new(scene, &world);
+    fn probes(scene: Scene, depth: u32) -> Color {
+        let scene = ready(scene, MAX_DEPTH);
         let ray = Ray::new(Point3::new(0.0, 1.5, 0.0), -Vec3::y(), 0.0);
-        let hit = world.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+        let hit = scene.intersect(&ray).unwrap();
         assert_eq!(hit.primitive, 0);
-        let at = Shading::new(scene, &hit, &ray);
+        let at = scene.shade(&hit, &ray);
         let wo = -ray.direction;
-        let bsdf = bsdf_at(&view, &at, &wo, GlassChoice::Fresnel);
+        let bsdf = bsdf_at(&scene, &at, &wo, GlassChoice::Fresnel);
         let sampler = Sampler::new(SamplerKind::Independent, 7, 3, 11);
         let spectrum = PathSpectrum::Rgb;
-        chain_emission(&view, &at, &bsdf, &wo, depth, 0.0, &sampler, &spectrum)
+        chain_emission(&scene, &at, &bsdf, &wo, depth, 0.0, &sampler, &spectrum)
     }
 
     #[test]
@@ -226,16 +238,15 @@ mod tests {
         // Each probe: the Lambert weight (the albedo), the mirror's, the
         // floor's emission; the path's own bounce is the missing share.
         let expected = ALBEDO * MIRROR * EMISSION * (SPLIT - 1) as f64 / SPLIT as f64;
-        let max_depth = crate::integrator::original::MAX_DEPTH;
-        for depth in [2, max_depth - 1] {
-            let got = probes(&scene, depth);
+        for depth in [2, MAX_DEPTH - 1] {
+            let got = probes(scene.clone(), depth);
             for channel in [got.r, got.g, got.b] {
                 assert!((channel - expected).abs() < 1e-9, "depth {depth}: {got:?}");
             }
         }
         // From the last scattering vertex the floor would be hit
         // `max_depth + 2`: beyond the original's paths.
-        assert!(probes(&scene, max_depth).is_black());
+        assert!(probes(scene, MAX_DEPTH).is_black());
     }
 
     #[test]
@@ -250,13 +261,15 @@ mod tests {
                 material: 2,
             });
         }
-        assert!(probes(&scene, 2).is_black());
+        assert!(probes(scene, 2).is_black());
     }
 
     #[test]
     fn probes_between_facing_mirrors_stop_after_max_chain_delta_vertices() {
         // A mirror floor under the mirror ceiling, and a look without a
-        // depth limit: a slanted ray would bounce to the limit.
+        // depth limit: a slanted ray would bounce to the limit. A small
+        // sphere light out of the ray's way, for light subpaths to start
+        // from.
         let mut scene = scene(true);
         if let Object::Group(objects) = &mut scene.root {
             objects[1] = Object::Plane {
@@ -264,10 +277,14 @@ mod tests {
                 offset: 0.0,
                 material: 1,
             };
+            objects.push(Object::Sphere {
+                center: Point3::new(3.0, 1.0, 5.0),
+                radius: 0.1,
+                motion: Vec3::zeros(),
+                material: 2,
+            });
         }
-        let world = World::build(&scene);
-        let mut view = SceneView::new(&scene, &world);
-        view.max_depth = 64;
+        let scene = ready(scene, 64);
         let ray = Ray::new(
             Point3::new(0.0, 1.01, 0.0),
             Vec3::new(0.3, 1.0, 0.0).normalize(),
@@ -275,7 +292,7 @@ mod tests {
         );
         let mut sampler = Sampler::new(SamplerKind::Independent, 1, 2, 3);
         let chain = follow_chain(
-            &view,
+            &scene,
             ray,
             Color::WHITE,
             2,
@@ -285,9 +302,9 @@ mod tests {
         assert_eq!(chain.delta_vertices, MAX_CHAIN);
         assert!(chain.emission.is_black());
         // Nor are vertices split where Russian roulette may end the path.
-        view.light_paths = true;
-        assert!(splits(&view, ROULETTE_DEPTH - 1, true));
-        assert!(!splits(&view, ROULETTE_DEPTH, true));
+        assert!(scene.light_paths());
+        assert!(splits(&scene, ROULETTE_DEPTH - 1, true));
+        assert!(!splits(&scene, ROULETTE_DEPTH, true));
     }
 
     #[test]
@@ -302,14 +319,13 @@ mod tests {
                 material: 2,
             });
         }
-        let world = World::build(&scene);
-        let view = SceneView::new(&scene, &world);
-        assert!(view.light_paths);
-        let max_depth = view.max_depth;
-        assert!(splits(&view, 2, true));
-        assert!(splits(&view, max_depth - 1, true));
-        assert!(!splits(&view, max_depth, true), "nothing left to find");
-        assert!(!splits(&view, 1, true), "the camera's vertex");
-        assert!(!splits(&view, 3, false), "reached from a diffuse vertex");
+        let scene = ready(scene, MAX_DEPTH);
+        assert!(scene.light_paths());
+        let max_depth = scene.max_depth();
+        assert!(splits(&scene, 2, true));
+        assert!(splits(&scene, max_depth - 1, true));
+        assert!(!splits(&scene, max_depth, true), "nothing left to find");
+        assert!(!splits(&scene, 1, true), "the camera's vertex");
+        assert!(!splits(&scene, 3, false), "reached from a diffuse vertex");
     }
 }

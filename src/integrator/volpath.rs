@@ -21,7 +21,7 @@
 //! with the transmittance on the way (at medium vertices: their irradiance
 //! times the phase function). Light subpaths (caustics) do not account for
 //! media and are off in such scenes (a note says so when rendering, see
-//! [`super::media_notes`]).
+//! `RenderScene::notices`).
 
 use std::f64::consts::PI;
 
@@ -30,18 +30,13 @@ use crate::color::Color;
 use crate::lights::LightSample;
 use crate::math::{Point3, Ray, Vec3};
 use crate::medium::{Flight, Medium};
+use crate::render_scene::{MAX_CROSSINGS, RenderScene};
 use crate::sampler::Sampler;
-use crate::scene::model::{Material, Scene};
 use crate::shading::Shading;
 
-use super::path::{ROULETTE_DEPTH, SHADOW_SHORTENING, power_heuristic};
+use super::lights;
+use super::path::{ROULETTE_DEPTH, power_heuristic};
 use super::scatter::{bsdf_at, emitter_choice, miss, sample};
-use super::{SceneView, lights};
-
-/// Interfaces a ray (or a shadow ray) crosses between two vertices before
-/// it is given up (it can only be reached by a degenerate geometry that
-/// traps a ray between coincident surfaces).
-const MAX_CROSSINGS: u32 = 256;
 
 /// Where the current ray left a vertex by a continuous lobe or the phase
 /// function: what MIS needs to weight the emission the ray finds.
@@ -53,15 +48,15 @@ struct Origin {
     pdf: f64,
 }
 
-pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color {
+pub fn radiance(scene: &RenderScene, mut ray: Ray, sampler: &mut Sampler) -> Color {
     let mut result = Color::BLACK;
     let mut throughput = Color::WHITE;
     let mut depth = 0;
     let mut crossings = 0;
     let mut origin: Option<Origin> = None;
-    let mut medium = view.scene.medium.as_ref();
+    let mut medium = scene.medium();
     loop {
-        let hit = view.world.intersect(&ray, 0.0, f64::INFINITY);
+        let hit = scene.intersect(&ray);
         if let Some(inside) = medium {
             let t_max = hit.as_ref().map_or(f64::INFINITY, |h| h.t);
             match inside.sample_flight(t_max, sampler.next_f64()) {
@@ -69,16 +64,16 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
                 Flight::Scatter { distance, weight } => {
                     throughput *= weight;
                     depth += 1;
-                    if depth > view.max_depth || throughput.is_black() {
+                    if depth > scene.max_depth() || throughput.is_black() {
                         break;
                     }
                     crossings = 0;
                     let point = ray.at(distance);
                     let travel = ray.direction;
                     result += throughput
-                        * medium_light_sample(view, inside, &point, &travel, ray.time, sampler);
-                    if !view.direct_lights.is_empty() {
-                        result += throughput * medium_pa1_lights(view, inside, &point, &travel);
+                        * medium_light_sample(scene, inside, &point, &travel, ray.time, sampler);
+                    if !scene.direct_lights().is_empty() {
+                        result += throughput * medium_pa1_lights(scene, inside, &point, &travel);
                     }
                     let wi = inside.phase.sample(&travel, sampler.next_2d());
                     origin = Some(Origin {
@@ -97,39 +92,39 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
             }
         }
         let Some(hit) = hit else {
-            result += miss(view, depth, throughput);
+            result += miss(scene, depth, throughput);
             break;
         };
-        let material = material_of(view.scene, hit.material);
+        let material = scene.material(hit.material);
         if material.interface {
             crossings += 1;
             if crossings > MAX_CROSSINGS {
                 break;
             }
             let entering = hit.geometric_normal.dot(&ray.direction) < 0.0;
-            medium = medium_after(view.scene, material, entering, medium);
+            medium = scene.medium_after(material, entering, medium);
             ray = hit.spawn_ray(ray.direction, ray.time);
             continue;
         }
         crossings = 0;
-        let at = Shading::new(view.scene, &hit, &ray);
+        let at = scene.shade(&hit, &ray);
         if !material.emission.is_black() {
             let weight = origin.map_or(1.0, |from| {
-                power_heuristic(from.pdf, view.emitters.pdf(&from.point, ray.time, &hit))
+                power_heuristic(from.pdf, scene.emitters().pdf(&from.point, ray.time, &hit))
             });
             result += throughput * material.emission * weight;
         }
         depth += 1;
-        if depth > view.max_depth {
+        if depth > scene.max_depth() {
             break;
         }
         let wo = -ray.direction;
-        let bsdf = bsdf_at(view, &at, &wo, GlassChoice::Fresnel);
+        let bsdf = bsdf_at(scene, &at, &wo, GlassChoice::Fresnel);
         if bsdf.is_black() {
             break;
         }
-        if !view.direct_lights.is_empty() {
-            result += throughput * surface_pa1_lights(view, &at, &bsdf, &wo, medium);
+        if !scene.direct_lights().is_empty() {
+            result += throughput * surface_pa1_lights(scene, &at, &bsdf, &wo, medium);
         }
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
             break;
@@ -138,18 +133,18 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
         origin = None;
         if !scattered.delta {
             let smooth = bsdf.smooth_probability();
-            let light = sample_light(view, &at.point, ray.time, sampler);
+            let light = sample_light(scene, &at.point, ray.time, sampler);
             if let Some(light) = light {
                 let reflected = bsdf.eval(&wo, &light.direction);
                 if !reflected.is_black() {
                     let start = if at.geometric.dot(&light.direction) < 0.0 {
-                        medium_after(view.scene, material, at.entering, medium)
+                        scene.medium_after(material, at.entering, medium)
                     } else {
                         medium
                     };
                     let from = at.spawn_origin(&light.direction);
-                    let reach = light.distance * (1.0 - SHADOW_SHORTENING);
-                    let seen = transmittance(view, from, light.direction, reach, start, ray.time);
+                    let (direction, distance) = (light.direction, light.distance);
+                    let seen = scene.transmittance(from, direction, distance, start, ray.time);
                     if !seen.is_black() {
                         let bsdf_pdf = bsdf.pdf(&wo, &light.direction) / smooth;
                         let weight = power_heuristic(light.pdf, bsdf_pdf);
@@ -167,7 +162,7 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
             });
         }
         if at.geometric.dot(&direction) < 0.0 {
-            medium = medium_after(view.scene, material, at.entering, medium);
+            medium = scene.medium_after(material, at.entering, medium);
         }
         throughput *= scattered.weight;
         if throughput.is_black() || !roulette(&mut throughput, depth, sampler) {
@@ -198,55 +193,35 @@ fn roulette(throughput: &mut Color, depth: u32, sampler: &mut Sampler) -> bool {
 /// An emitter point for a light sample from `point` (see
 /// [`crate::lights::Emitters::sample`]).
 fn sample_light(
-    view: &SceneView,
+    scene: &RenderScene,
     point: &Point3,
     time: f64,
     sampler: &mut Sampler,
 ) -> Option<LightSample> {
-    if view.emitters.is_empty() {
+    if scene.emitters().is_empty() {
         return None;
     }
-    let select = emitter_choice(view, sampler);
+    let select = emitter_choice(scene, sampler);
     let u = sampler.next_2d();
-    view.emitters.sample(point, time, select, u)
-}
-
-fn material_of(scene: &Scene, index: usize) -> &Material {
-    scene.materials.get(index).unwrap_or(&Material::DEFAULT)
-}
-
-/// The medium a ray is in after crossing a surface of `material` (inwards
-/// when `entering`), coming from `current`.
-fn medium_after<'s>(
-    scene: &'s Scene,
-    material: &'s Material,
-    entering: bool,
-    current: Option<&'s Medium>,
-) -> Option<&'s Medium> {
-    match (&material.interior, entering) {
-        (None, _) => current,
-        (Some(inside), true) => Some(inside),
-        (Some(_), false) => scene.medium.as_ref(),
-    }
+    scene.emitters().sample(point, time, select, u)
 }
 
 /// One light sample at a medium vertex reached by light travelling along
 /// `travel`: `L_e T p / pdf_light * w_light` (the caller multiplies by the
 /// throughput), MIS-weighted against phase sampling.
 fn medium_light_sample(
-    view: &SceneView,
+    scene: &RenderScene,
     medium: &Medium,
     point: &Point3,
     travel: &Vec3,
     time: f64,
     sampler: &mut Sampler,
 ) -> Color {
-    let Some(light) = sample_light(view, point, time, sampler) else {
+    let Some(light) = sample_light(scene, point, time, sampler) else {
         return Color::BLACK;
     };
     let phase = medium.phase.eval(travel, &light.direction);
-    let reach = light.distance * (1.0 - SHADOW_SHORTENING);
-    let seen = transmittance(view, *point, light.direction, reach, Some(medium), time);
+    let seen = scene.transmittance(*point, light.direction, light.distance, Some(medium), time);
     if seen.is_black() {
         return Color::BLACK;
     }
@@ -258,14 +233,14 @@ fn medium_light_sample(
 /// [`lights::direct`], with the transmittance of the media on the way
 /// instead of an opaque-or-not shadow ray).
 fn surface_pa1_lights(
-    view: &SceneView,
+    scene: &RenderScene,
     at: &Shading,
     bsdf: &Bsdf,
     wo: &Vec3,
     medium: Option<&Medium>,
 ) -> Color {
     let mut sum = Color::BLACK;
-    for light in view.direct_lights {
+    for light in scene.direct_lights() {
         let Some(way) = lights::toward(light, &at.point) else {
             continue;
         };
@@ -277,8 +252,7 @@ fn surface_pa1_lights(
             continue;
         }
         let from = at.spawn_origin(&way.to_light);
-        let reach = way.distance * lights::SHADOW_REACH;
-        let seen = transmittance(view, from, way.to_light, reach, medium, 0.0);
+        let seen = scene.transmittance(from, way.to_light, way.distance, medium, 0.0);
         sum += reflected * way.color * seen * PI;
     }
     sum
@@ -287,60 +261,15 @@ fn surface_pa1_lights(
 /// The PA1 lights scattered at a medium vertex: their irradiance `pi *
 /// colour` (the framework's convention, no distance falloff) times the
 /// phase function and the transmittance on the way.
-fn medium_pa1_lights(view: &SceneView, medium: &Medium, point: &Point3, travel: &Vec3) -> Color {
+fn medium_pa1_lights(scene: &RenderScene, medium: &Medium, point: &Point3, travel: &Vec3) -> Color {
     let mut sum = Color::BLACK;
-    for light in view.direct_lights {
+    for light in scene.direct_lights() {
         let Some(way) = lights::toward(light, point) else {
             continue;
         };
         let phase = medium.phase.eval(travel, &way.to_light);
-        let reach = way.distance * lights::SHADOW_REACH;
-        let seen = transmittance(view, *point, way.to_light, reach, Some(medium), 0.0);
+        let seen = scene.transmittance(*point, way.to_light, way.distance, Some(medium), 0.0);
         sum += way.color * seen * (phase * PI);
     }
     sum
-}
-
-/// Transmittance from `from` along the unit `direction` over `distance`,
-/// starting in `medium`: the product of every medium's `e^(-sigma_t d)`
-/// across the interfaces on the way, black when another surface is in
-/// the way.
-pub fn transmittance<'s>(
-    view: &SceneView<'s>,
-    from: Point3,
-    direction: Vec3,
-    distance: f64,
-    mut medium: Option<&'s Medium>,
-    time: f64,
-) -> Color {
-    let mut seen = Color::WHITE;
-    let mut ray = Ray::new(from, direction, time);
-    let mut remaining = distance;
-    for _ in 0..=MAX_CROSSINGS {
-        let Some(hit) = view.world.intersect(&ray, 0.0, remaining) else {
-            if let Some(inside) = medium {
-                seen *= inside.transmittance(remaining);
-            }
-            return seen;
-        };
-        let material = material_of(view.scene, hit.material);
-        if !material.interface {
-            return Color::BLACK;
-        }
-        if let Some(inside) = medium {
-            seen *= inside.transmittance(hit.t);
-            if seen.is_black() {
-                return Color::BLACK;
-            }
-        }
-        let entering = hit.geometric_normal.dot(&direction) < 0.0;
-        medium = medium_after(view.scene, material, entering, medium);
-        let next = hit.spawn_origin(&direction);
-        remaining -= (next - ray.origin).dot(&direction);
-        if remaining <= 0.0 {
-            return seen;
-        }
-        ray = Ray::new(next, direction, time);
-    }
-    Color::BLACK
 }

@@ -2,6 +2,7 @@
 //! emitters, is its canvas's: smallpt's eye sits behind the box's front
 //! wall, its rays start inside the box.
 
+use super::tests::built;
 use super::*;
 use crate::scene::model::{Material, Object};
 
@@ -38,15 +39,12 @@ fn a_light_in_the_box_is_sampled_when_the_eye_is_behind_its_front_wall() {
     // The canvas (z about 155.7) is inside the box: the light is on the
     // camera's side. (Taken from the eye, it was behind the wall and never
     // sampled: crosscheck.txt lost light sampling and light subpaths.)
-    let scene = smallpt_like(140.0);
-    let world = World::build(&scene);
-    let emitters = Emitters::build(&scene, &world);
+    let inside_box = built(&smallpt_like(140.0));
+    let emitters = inside_box.emitters();
     assert!(!emitters.is_empty());
     let inside = Point3::new(50.0, 10.0, 100.0);
     let sample = emitters.sample(&inside, 0.0, 0.5, [0.3, 0.7]);
     assert!(sample.is_some_and(|s| s.pdf > 0.0));
     // A canvas that does not reach the wall leaves the light behind it.
-    let scene = smallpt_like(100.0);
-    let world = World::build(&scene);
-    assert!(Emitters::build(&scene, &world).is_empty());
+    assert!(built(&smallpt_like(100.0)).emitters().is_empty());
 }

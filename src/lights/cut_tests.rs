@@ -5,9 +5,12 @@
 use std::f64::consts::PI;
 
 use super::emitter::uniform_sphere;
+use super::tests::built;
 use super::*;
 use crate::color::Color;
+use crate::look::Look;
 use crate::math::Ray;
+use crate::render_scene::{RenderScene, SceneSettings};
 use crate::rng::Rng;
 use crate::scene::model::{Object, Scene};
 use crate::world::World;
@@ -34,8 +37,8 @@ fn sphere_cut_by_a_plane_is_sampled_on_the_reachable_cap() {
         },
     ]);
     let scene = Scene::new(vec![Material::default(), emissive], root);
-    let world = World::build(&scene);
-    let emitters = Emitters::build(&scene, &world);
+    let built = built(&scene);
+    let (world, emitters) = (built.world(), built.emitters());
     let mut rng = Rng::new(11, 12);
     for reference in [Point3::new(0.0, -1.0, 0.0), Point3::new(2.5, 0.9, -1.0)] {
         // Every light sample reaches the light, with the density of its hit.
@@ -59,7 +62,7 @@ fn sphere_cut_by_a_plane_is_sampled_on_the_reachable_cap() {
             sampled += 1.0 / light.pdf / n as f64;
         }
         // ... and the samples cover the solid angle in which the light is seen.
-        assert_covers_the_seen_light(&world, reference, sampled, &mut rng);
+        assert_covers_the_seen_light(world, reference, sampled, &mut rng);
     }
 }
 
@@ -86,14 +89,10 @@ fn a_one_sided_plane_cuts_nothing_seen_from_behind() {
         },
     ]);
     let scene = Scene::new(vec![Material::default(), emissive], root);
-    let world = World::build_with(
-        &scene,
-        crate::world::ShapeRules {
-            one_sided_planes: true,
-            ..Default::default()
-        },
-    );
-    let emitters = Emitters::build(&scene, &world);
+    // yuzc19's look: its planes are one-sided.
+    const { assert!(Look::YZC.one_sided_planes) };
+    let built = RenderScene::build(scene.clone(), &SceneSettings::defaults(&scene, Look::YZC));
+    let (world, emitters) = (built.world(), built.emitters());
     let mut rng = Rng::new(5, 6);
     // Above the ceiling every ray passes it: the whole sphere is in view,
     // not only the cap above the ceiling.
@@ -108,7 +107,7 @@ fn a_one_sided_plane_cuts_nothing_seen_from_behind() {
         assert_eq!(hit.primitive, 1);
         sampled += 1.0 / light.pdf / n as f64;
     }
-    assert_covers_the_seen_light(&world, reference, sampled, &mut rng);
+    assert_covers_the_seen_light(world, reference, sampled, &mut rng);
 }
 
 #[test]
@@ -156,8 +155,8 @@ fn a_cut_sphere_is_picked_by_the_power_of_its_cap_on_the_cameras_side() {
         },
     ]);
     let scene = Scene::new(vec![Material::default(), light(15.0), light(30.0)], root);
-    let world = World::build(&scene);
-    let emitters = Emitters::build(&scene, &world);
+    let built = built(&scene);
+    let emitters = built.emitters();
     let distribution = emitters.distribution.as_ref().unwrap();
     let cap = 2.0 * PI * radius * depth * 15.0;
     let small = 4.0 * PI * 0.25 * 0.25 * 30.0;

@@ -8,10 +8,11 @@ use super::emitter::uniform_sphere;
 use super::*;
 use crate::color::Color;
 use crate::geometry::{Disk, Rectangle, Shape, Sphere, Triangle};
+use crate::look::Look;
 use crate::math::Ray;
+use crate::render_scene::{RenderScene, SceneSettings};
 use crate::rng::Rng;
 use crate::scene::model::{Object, Scene};
-use crate::world::World;
 
 /// `E[1 / pdf]` over light samples (the solid angle the sampler covers),
 /// checking on the way that `pdf` agrees with the density of `sample`.
@@ -138,6 +139,15 @@ fn tiny_distant_sphere_has_the_small_cone_density() {
     assert!((s.distance - (1e4 - 1e-3)).abs() < 1e-3);
 }
 
+/// The render-time scene of `scene` in the original look, whose world and
+/// emitters these tests read.
+pub(super) fn built(scene: &Scene) -> RenderScene {
+    RenderScene::build(
+        scene.clone(),
+        &SceneSettings::defaults(scene, Look::ORIGINAL),
+    )
+}
+
 fn scene(materials: Vec<crate::scene::model::Material>, root: Object) -> Scene {
     Scene::new(materials, root)
 }
@@ -201,8 +211,8 @@ fn world_hits_find_the_density_their_light_sample_had() {
         ),
     ]);
     let scene = scene(vec![emissive], root);
-    let world = World::build(&scene);
-    let emitters = Emitters::build(&scene, &world);
+    let built = built(&scene);
+    let (world, emitters) = (built.world(), built.emitters());
     // Three mesh triangles (one invalid, never picked) and one sphere; the
     // ellipsoid is left to BSDF sampling.
     assert_eq!(emitters.len(), 4);
@@ -256,8 +266,8 @@ fn light_paths_start_on_small_emitters_only_with_matching_densities() {
         sphere(Point3::new(10.0, 0.0, 0.0), 0.5, 1),
     ]);
     let scene = scene(vec![light(1.0), light(50.0)], root);
-    let world = World::build(&scene);
-    let mut emitters = Emitters::build(&scene, &world);
+    let built = built(&scene);
+    let (world, mut emitters) = (built.world(), built.emitters().clone());
     assert!(emitters.restrict_light_paths(&Point3::zeros()));
     let power = |radiance: f64, radius: f64| radiance * 4.0 * PI * radius * radius;
     let share = power(50.0, 0.5) / (power(50.0, 0.5) + power(1.0, 100.0));
@@ -309,8 +319,8 @@ fn cover_means_every_emitting_surface_can_be_sampled() {
     };
     let covered = |objects: Vec<Object>| {
         let scene = scene(materials.clone(), Object::Group(objects));
-        let world = World::build(&scene);
-        Emitters::build(&scene, &world).cover(&scene, &world)
+        let built = built(&scene);
+        built.emitters().cover(&scene, built.world())
     };
     // A sampled sphere light over a plain floor: light sampling finds all.
     assert!(covered(vec![sphere(1), plane(0)]));

@@ -20,33 +20,16 @@
 //! "Unlimited" depths are 64 scattering vertices: Russian roulette ends
 //! paths long before, as it did in those renderers, without bias.
 
-use std::sync::Arc;
-
 use crate::bsdf::DielectricFresnel;
 use crate::bsdf::build::LookLobes;
 use crate::geometry::SphereTest;
-use crate::integrator::Integrator;
 use crate::scene::model::{CameraDesc, Dialect, FovAxis, LensShape, Scene};
 use crate::world::ShapeRules;
 
+mod integrator;
 mod mist;
+pub use integrator::Integrator;
 pub use mist::{Mist, cambrian_mean_cosine};
-
-/// How radiance is estimated.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Estimator {
-    /// Path tracing (the `--integrator` chooses the path integrator or the
-    /// original estimator: the same expected image).
-    PathTracing,
-    /// The course framework's ray casting: at the first hit, for every point
-    /// and directional light, `kd max(0, n.l) + ks max(0, v.r)^shininess`,
-    /// no shadows, nothing else.
-    RayCasting,
-    /// Path tracing by BSDF sampling alone (the original estimator), for
-    /// looks whose conventions next-event estimation cannot reproduce: rays
-    /// that re-hit the surface they leave.
-    BsdfSampling,
-}
 
 /// How a look renders dispersive glass.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -70,17 +53,6 @@ pub enum RayOrigins {
     /// again; inside an emitting mirror sphere it collects the emission at
     /// every bounce).
     AtHit,
-}
-
-impl Estimator {
-    /// The integrator that computes this estimator by default.
-    pub fn integrator(self) -> Integrator {
-        match self {
-            Estimator::PathTracing => Integrator::Path,
-            Estimator::RayCasting => Integrator::RayCast,
-            Estimator::BsdfSampling => Integrator::Original,
-        }
-    }
 }
 
 /// What a ray that hits nothing brings back.
@@ -143,7 +115,8 @@ pub struct Look {
     pub name: &'static str,
     /// Whose renderer it is.
     pub renderer: &'static str,
-    pub estimator: Estimator,
+    /// The estimator that renders it (`--integrator` overrides it).
+    pub integrator: Integrator,
     /// Scattering vertices before a path ends (`--max-depth` overrides it).
     pub max_depth: u32,
     pub miss: Miss,
@@ -184,7 +157,7 @@ impl Look {
     pub const ORIGINAL: Look = Look {
         name: "original",
         renderer: "the ported renderer",
-        estimator: Estimator::PathTracing,
+        integrator: Integrator::Path,
         max_depth: 5,
         miss: Miss::CameraBackground,
         point_lights: PointLights::WithoutEmitters,
@@ -214,7 +187,7 @@ impl Look {
     pub const PA1: Look = Look {
         name: "pa1",
         renderer: "the course framework's ray caster",
-        estimator: Estimator::RayCasting,
+        integrator: Integrator::RayCast,
         max_depth: 1,
         miss: Miss::CameraBackground,
         pixels: PixelSampling::Centre,
@@ -238,7 +211,7 @@ impl Look {
     pub const WSO: Look = Look {
         name: "wso",
         renderer: "W-Solaris/computer-graphics (the D3 family's path tracer)",
-        estimator: Estimator::BsdfSampling,
+        integrator: Integrator::Original,
         ray_origins: RayOrigins::AtHit,
         lens_shape: Some(LensShape::Square),
         max_depth: 14,
@@ -315,21 +288,6 @@ impl Look {
             camera.lens_shape = shape;
         }
         camera
-    }
-
-    /// Makes `scene` read as this look reads it where that is a property
-    /// of the scene's data: textures upside down for [`TextureRows::Down`],
-    /// rewritten for [`TextureFrames::Cambrian`].
-    pub fn adapt(&self, scene: &mut Scene) {
-        if self.texture_frames == TextureFrames::Cambrian {
-            crate::texture_frames::apply_cambrian(scene);
-        }
-        if self.texture_rows == TextureRows::Down {
-            scene
-                .textures
-                .iter_mut()
-                .for_each(|texture| Arc::make_mut(texture).flip_rows());
-        }
     }
 
     /// How this look's shapes meet rays.

@@ -168,13 +168,9 @@ impl World {
     /// area-weighted vertex normals) shared by its instances, and a top-level
     /// BVH is built over the bounded primitives (unless they are few).
     /// Degenerate shapes (zero radius, zero normal, zero area, unusable profiles)
-    /// are dropped.
-    pub fn build(scene: &Scene) -> World {
-        World::build_with(scene, ShapeRules::default())
-    }
-
-    /// [`World::build`] with a look's rules for how shapes meet rays.
-    pub fn build_with(scene: &Scene, rules: ShapeRules) -> World {
+    /// are dropped. `rules` are the look's for how shapes meet rays. (The
+    /// render-time scene builds its world here: see `RenderScene::build`.)
+    pub(crate) fn build(scene: &Scene, rules: ShapeRules) -> World {
         let mut builder = Builder::for_tree(&scene.root);
         builder.rules = rules;
         builder.visit(&scene.root, None);
@@ -188,7 +184,7 @@ impl World {
     }
 
     /// A world over already made primitives.
-    pub fn from_primitives(primitives: Vec<Primitive>) -> World {
+    pub(crate) fn from_primitives(primitives: Vec<Primitive>) -> World {
         let mut plain = PlainShapes::default();
         let mut linear = Vec::new();
         let mut bounded = Vec::new();

@@ -52,7 +52,7 @@ fn build_composes_transforms_and_shares_meshes() {
             material: 4,
         },
     ]);
-    let world = World::build(&scene(root));
+    let world = World::build(&scene(root), ShapeRules::default());
     // The zero-radius sphere is dropped; the identity transform is not stored.
     assert_eq!(world.primitives().len(), 3);
     assert!(world.primitive(1).transform.is_none());

@@ -10,9 +10,11 @@ pub use shapes::*;
 use std::path::{Path, PathBuf};
 
 use pathtracer::color::Color;
-use pathtracer::render::{RenderSettings, render};
+use pathtracer::image_io::Image;
+use pathtracer::look::Look;
+use pathtracer::render::{RenderSettings, RenderStats, render};
+use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::scene::model::{Material, Object, Scene};
-use pathtracer::world::World;
 
 pub fn shared() -> Option<PathBuf> {
     let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared"));
@@ -103,18 +105,45 @@ pub fn independent_runs(
     first_seed: u64,
     count: u64,
 ) -> Vec<Vec<f64>> {
-    let world = World::build(scene);
+    let ready = ready(scene.clone(), settings);
     (0..count)
         .map(|run| {
             let settings = RenderSettings {
                 seed: first_seed + run,
                 ..settings.clone()
             };
-            let (image, stats) = render(scene, &world, &settings).expect("renders");
+            let (image, stats) = render(&ready, &settings).expect("renders");
             assert_eq!(stats.dropped, 0, "NaN or infinite samples");
             image.pixels.iter().map(Color::average).collect()
         })
         .collect()
+}
+
+/// The render-time scene of `scene` for `settings` (through the one
+/// function that makes one, as the command line does).
+pub fn ready(scene: Scene, settings: &RenderSettings) -> RenderScene {
+    RenderScene::build(scene, &settings.scene())
+}
+
+/// The render-time scene of `scene` in the original look with its own
+/// camera (for tests of its geometry: `built(scene).world()`).
+pub fn built(scene: Scene) -> RenderScene {
+    let settings = SceneSettings::defaults(&scene, Look::ORIGINAL);
+    RenderScene::build(scene, &settings)
+}
+
+/// The render-time scene of `objects` alone, without materials (so that
+/// every hit has its uv and surface derivatives): for tests of geometry.
+pub fn world_of(objects: Vec<Object>) -> RenderScene {
+    built(Scene::new(Vec::new(), Object::Group(objects)))
+}
+
+/// `scene` rendered with `settings`.
+pub fn render_scene(
+    scene: &Scene,
+    settings: &RenderSettings,
+) -> Result<(Image, RenderStats), String> {
+    render(&ready(scene.clone(), settings), settings)
 }
 
 /// Statistic `f` of independent runs (image mean or one pixel): its mean

@@ -3,10 +3,9 @@
 use std::path::Path;
 use std::sync::Arc;
 
-use pathtracer::geometry::Transform;
 use pathtracer::math::{Aabb, Matrix, Point3, Ray, Vec3};
 use pathtracer::rng::Rng;
-use pathtracer::scene::model::{CurveKind, MeshData, Profile};
+use pathtracer::scene::model::{CurveKind, MeshData, Object, Profile};
 
 pub const BUNNY: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
@@ -71,9 +70,24 @@ pub fn ray_at_box(rng: &mut Rng, b: &Aabb) -> Ray {
     Ray::new(origin, target - origin, rng.next_f64())
 }
 
-pub fn transform(matrix: Matrix) -> Option<Box<Transform>> {
+/// `child` under the object-to-world transform `matrix`.
+pub fn transformed(matrix: Matrix, child: Object) -> Object {
     let inverse = matrix.try_inverse().expect("invertible");
-    Some(Box::new(Transform::new(matrix, inverse)))
+    Object::Transform {
+        matrix,
+        inverse,
+        child: Box::new(child),
+    }
+}
+
+/// A sphere that does not move.
+pub fn ball(center: Point3, radius: f64, material: usize) -> Object {
+    Object::Sphere {
+        center,
+        radius,
+        motion: Vec3::zeros(),
+        material,
+    }
 }
 
 pub fn vase() -> Profile {

@@ -7,19 +7,17 @@ use super::light_path::CausticVertex;
 use super::{connection_weight, density_ratio};
 use crate::camera::{Camera, Projection};
 use crate::color::Color;
-use crate::integrator::{CameraSample, SceneView, Splats};
-use crate::math::{Point3, Ray, Vec3, offset_origin};
+use crate::integrator::{CameraSample, Splats};
+use crate::math::{Point3, Vec3, offset_origin};
+use crate::render_scene::RenderScene;
 use crate::shading::Shading;
 use crate::subpixel::{covering_pixels, filter_density};
-
-/// Shadow rays stop this fraction short of their target.
-const SHADOW_SHORTENING: f64 = 1e-7;
 
 /// The caustic light that `y` sends to the camera path's Lambert vertex
 /// `at`, whose BRDF over the probability of its lobe choice is `f` (the
 /// caller multiplies by the camera path's throughput), MIS-weighted against
 /// the path tracer.
-pub fn connect(view: &SceneView, at: &Shading, f: Color, y: &CausticVertex) -> Color {
+pub fn connect(scene: &RenderScene, at: &Shading, f: Color, y: &CausticVertex) -> Color {
     let offset = y.point - at.point;
     let distance_squared = offset.norm_squared();
     let distance = distance_squared.sqrt();
@@ -31,11 +29,7 @@ pub fn connect(view: &SceneView, at: &Shading, f: Color, y: &CausticVertex) -> C
     let Some(edge) = edge_density(cosine_pdf, -y.geometric.dot(&w), distance_squared) else {
         return Color::BLACK;
     };
-    let shadow = Ray::new(at.spawn_origin(&w), w, y.time);
-    if view
-        .world
-        .occluded(&shadow, 0.0, distance * (1.0 - SHADOW_SHORTENING))
-    {
+    if !scene.unoccluded(at.spawn_origin(&w), w, distance, y.time) {
         return Color::BLACK;
     }
     let weight = connection_weight(edge, y.shading_ratio, y.emission_density);
@@ -80,12 +74,12 @@ fn camera_edge_for(
 /// of `sample` that found the point with unit geometric `normal` (facing the
 /// camera): `None` when light tracing could not reach it.
 pub fn camera_edge(
-    view: &SceneView,
+    scene: &RenderScene,
     sample: &CameraSample,
     point: &Point3,
     normal: &Vec3,
 ) -> Option<f64> {
-    let camera = view.camera.as_ref()?;
+    let camera = scene.camera();
     let projection = camera.project(point, sample.lens)?;
     let jacobian = film_per_area(&projection, normal)?;
     let edge = camera_edge_for(
@@ -102,7 +96,7 @@ pub fn camera_edge(
 /// point of the unit-square sample `lens`, splatted (MIS-weighted against the
 /// path tracer) onto the pixels whose filters cover its film position.
 pub fn splat_to_camera(
-    view: &SceneView,
+    scene: &RenderScene,
     camera: &Camera,
     y: &CausticVertex,
     lens: [f64; 2],
@@ -128,16 +122,9 @@ pub fn splat_to_camera(
         return;
     }
     let to_eye = -projection.direction;
-    let shadow = Ray::new(
-        offset_origin(&y.point, &y.geometric, &to_eye),
-        to_eye,
-        y.time,
-    );
+    let origin = offset_origin(&y.point, &y.geometric, &to_eye);
     let free = projection.distance - projection.canvas;
-    if view
-        .world
-        .occluded(&shadow, 0.0, free * (1.0 - SHADOW_SHORTENING))
-    {
+    if !scene.unoccluded(origin, to_eye, free, y.time) {
         return;
     }
     // Radiance towards the eye: the BRDF of y times the subpath's weight;

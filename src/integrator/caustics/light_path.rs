@@ -7,9 +7,10 @@ use std::f64::consts::PI;
 use super::connect::splat_to_camera;
 use crate::bsdf::GlassChoice;
 use crate::color::Color;
+use crate::integrator::Splats;
 use crate::integrator::scatter::{bsdf_at, emitter_choice, sample};
-use crate::integrator::{SceneView, Splats};
 use crate::math::{Point3, Ray, Vec3, offset_origin};
+use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
 use crate::sampling::cosine_hemisphere;
 use crate::shading::Shading;
@@ -45,7 +46,7 @@ pub struct CausticVertex {
 /// and splats its connection to the camera into `splats`. Returns its
 /// caustic vertex for the camera path's connections.
 pub fn trace(
-    view: &SceneView,
+    scene: &RenderScene,
     time: f64,
     sampler: &Sampler,
     max_chain: u32,
@@ -56,16 +57,16 @@ pub fn trace(
         return None;
     }
     let mut sampler = sampler.fork(LIGHT_PATH_SALT);
-    let share = view.emitters.light_path_share();
+    let share = scene.emitters().light_path_share();
     if share < 1.0 && sampler.next_f64() >= share {
         return None;
     }
-    let select = emitter_choice(view, &mut sampler);
+    let select = emitter_choice(scene, &mut sampler);
     let u_point = sampler.next_2d();
     let u_side = sampler.next_f64();
     let u_direction = sampler.next_2d();
-    let start = view.emitters.sample_emission_point(
-        &view.scene.camera.center,
+    let start = scene.emitters().sample_emission_point(
+        &scene.camera_center(),
         time,
         select,
         u_point,
@@ -82,15 +83,15 @@ pub fn trace(
     );
     // Ending at its first hit unless that is a mirror or glass, the
     // subpath needs no ray when it cannot find one.
-    if !view.casters.may_hit(&ray) {
+    if !scene.casters().may_hit(&ray) {
         return None;
     }
     let mut chain = 0;
     loop {
-        let hit = view.world.intersect(&ray, 0.0, f64::INFINITY)?;
-        let at = Shading::new(view.scene, &hit, &ray);
+        let hit = scene.intersect(&ray)?;
+        let at = scene.shade(&hit, &ray);
         let towards_light = -ray.direction;
-        let bsdf = bsdf_at(view, &at, &towards_light, GlassChoice::Fresnel);
+        let bsdf = bsdf_at(scene, &at, &towards_light, GlassChoice::Fresnel);
         if bsdf.is_black() {
             return None;
         }
@@ -121,14 +122,13 @@ pub fn trace(
                 chain,
                 time,
             };
-            if let Some(camera) = &view.camera {
-                let lens = if camera.has_lens() {
-                    sampler.next_2d()
-                } else {
-                    [0.5, 0.5]
-                };
-                splat_to_camera(view, camera, &y, lens, splats);
-            }
+            let camera = scene.camera();
+            let lens = if camera.has_lens() {
+                sampler.next_2d()
+            } else {
+                [0.5, 0.5]
+            };
+            splat_to_camera(scene, camera, &y, lens, splats);
             return Some(y);
         };
         if crosses_nonreciprocal(&at, &scattered.wi) {

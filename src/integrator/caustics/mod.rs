@@ -41,46 +41,20 @@
 mod connect;
 mod light_path;
 
-use crate::lights::Emitters;
-use crate::math::{Aabb, Vec3};
-use crate::scene::model::Scene;
-use crate::world::{World, WorldHit};
-
-use super::SceneView;
-use super::casters::specular_primitives;
+use crate::math::Vec3;
+use crate::render_scene::RenderScene;
+use crate::world::WorldHit;
 
 pub use connect::{camera_edge, connect, edge_density};
 pub use light_path::{CausticVertex, crosses_nonreciprocal, trace};
 
-/// Whether light subpaths can add anything to a scene: it needs mirror or
-/// glass to go through and emitters small enough, as seen from the mirrors
-/// and glass, for the path tracer to miss them (see
-/// [`Emitters::restrict_light_paths`], which this calls with the centre of
-/// the bounded mirror and glass objects, or the camera).
-pub fn prepare(scene: &Scene, world: &World, emitters: &mut Emitters) -> bool {
-    let casters: Vec<_> = specular_primitives(scene, world).collect();
-    if casters.is_empty() || emitters.is_empty() {
-        return false;
-    }
-    let bounds = casters
-        .iter()
-        .filter_map(|primitive| primitive.bounds())
-        .filter(Aabb::is_valid)
-        .fold(Aabb::empty(), |acc, b| acc.union(&b));
-    let reference = if bounds.is_empty() {
-        scene.camera.center
-    } else {
-        bounds.centroid()
-    };
-    emitters.restrict_light_paths(&reference)
-}
-
 /// The emission density (see the module documentation) of the light point
 /// of `hit` for light leaving it in unit `direction`. Directions are
 /// cosine-distributed, so it is the density of the point.
-pub fn emission_density(view: &SceneView, time: f64, hit: &WorldHit, direction: &Vec3) -> f64 {
-    view.emitters
-        .emission_point_density(&view.scene.camera.center, time, hit, direction)
+pub fn emission_density(scene: &RenderScene, time: f64, hit: &WorldHit, direction: &Vec3) -> f64 {
+    scene
+        .emitters()
+        .emission_point_density(&scene.camera_center(), time, hit, direction)
 }
 
 /// `r = p_path / p_connection` (see the module documentation).

@@ -8,6 +8,7 @@
 //! image is the same, with fewer world queries.
 
 use crate::geometry::Shape;
+use crate::lights::Emitters;
 use crate::math::{Aabb, Point3, Ray, Vec3};
 use crate::scene::model::Scene;
 use crate::world::{Primitive, World};
@@ -39,7 +40,7 @@ impl Default for Casters {
 }
 
 impl Casters {
-    /// The casters of `world` (see [`specular_primitives`]).
+    /// The casters of `world`: its primitives with a mirror or smooth glass.
     pub fn of(scene: &Scene, world: &World) -> Casters {
         let mut casters = Casters {
             balls: Vec::new(),
@@ -96,9 +97,32 @@ impl Casters {
     }
 }
 
+/// Whether light subpaths can add anything to a scene: it needs mirror or
+/// glass to go through and emitters small enough, as seen from the mirrors
+/// and glass, for the path tracer to miss them (see
+/// [`Emitters::restrict_light_paths`], which this calls with the centre of
+/// the bounded mirror and glass objects, or the camera).
+pub fn prepare_light_paths(scene: &Scene, world: &World, emitters: &mut Emitters) -> bool {
+    let casters: Vec<_> = specular_primitives(scene, world).collect();
+    if casters.is_empty() || emitters.is_empty() {
+        return false;
+    }
+    let bounds = casters
+        .iter()
+        .filter_map(|primitive| primitive.bounds())
+        .filter(Aabb::is_valid)
+        .fold(Aabb::empty(), |acc, b| acc.union(&b));
+    let reference = if bounds.is_empty() {
+        scene.camera.center
+    } else {
+        bounds.centroid()
+    };
+    emitters.restrict_light_paths(&reference)
+}
+
 /// The primitives of `world` with a material that has a delta lobe (a
 /// mirror or smooth glass): the casters of caustics.
-pub fn specular_primitives<'w>(
+fn specular_primitives<'w>(
     scene: &'w Scene,
     world: &'w World,
 ) -> impl Iterator<Item = &'w Primitive> + 'w {
@@ -120,6 +144,8 @@ fn around(bounds: &Aabb) -> (Point3, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::look::Look;
+    use crate::render_scene::{RenderScene, SceneSettings};
     use crate::rng::Rng;
     use crate::scene::model::{Material, Object};
 
@@ -165,8 +191,12 @@ mod tests {
     #[test]
     fn a_ray_that_finds_a_caster_may_hit_one() {
         let scene = scene();
-        let world = World::build(&scene);
-        let casters = Casters::of(&scene, &world);
+        let built = RenderScene::build(
+            scene.clone(),
+            &SceneSettings::defaults(&scene, Look::ORIGINAL),
+        );
+        let world = built.world();
+        let casters = Casters::of(&scene, world);
         assert!(!casters.anywhere);
         assert_eq!((casters.balls.len(), casters.planes.len()), (2, 1));
         let mut rng = Rng::new(9, 10);

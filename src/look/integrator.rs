@@ -1,0 +1,40 @@
+//! Which estimator renders an image: each look's own (see `Look`), or the
+//! one `--integrator` chooses. The estimators themselves are in
+//! `crate::integrator`.
+
+/// An estimator of the radiance along camera rays.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Integrator {
+    /// The original renderer's estimator: path tracing by BSDF sampling
+    /// alone, one lobe chosen per vertex (see docs/original-renderer.md);
+    /// the estimator of looks whose conventions next-event estimation
+    /// cannot reproduce (rays that re-hit the surface they leave).
+    Original,
+    /// Path tracing with next-event estimation and multiple importance
+    /// sampling at diffuse vertices: the original's expected image with
+    /// less noise (see `integrator::path`).
+    #[default]
+    Path,
+    /// The course framework's ray casting: at the first hit, for every point
+    /// and directional light, `kd max(0, n.l) + ks max(0, v.r)^shininess`,
+    /// no shadows, nothing else (the PA1 look's).
+    RayCast,
+}
+
+impl Integrator {
+    pub const ALL: [Integrator; 3] = [Integrator::Path, Integrator::Original, Integrator::RayCast];
+
+    /// The command-line name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Integrator::Original => "original",
+            Integrator::Path => "path",
+            Integrator::RayCast => "raycast",
+        }
+    }
+
+    /// Parses a command-line name, as returned by [`Integrator::name`].
+    pub fn from_name(name: &str) -> Option<Integrator> {
+        Integrator::ALL.into_iter().find(|i| i.name() == name)
+    }
+}
