@@ -103,7 +103,7 @@ pub fn convert(args: &ConvertArgs) -> Result<(), String> {
     let encoding = args.encoding.encoding();
     encoding.check()?;
     if is_hdr(&args.output) && encoding != Encoding::default() {
-        eprintln!(
+        pathtracer::stderr_line!(
             "warning: --gamma, --exposure and --tonemap apply to 8-bit outputs; {} stays linear",
             args.output.display()
         );

@@ -22,6 +22,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
+use pathtracer::allocation::check_available;
 use pathtracer::film::Film;
 use pathtracer::image_io::{Encoding, Tonemap};
 use pathtracer::integrator::Integrator;
@@ -251,10 +252,19 @@ impl SamplingOptions {
     /// before anything is allocated, naming `--width`/`--height` when they
     /// chose it (a scene's own size is checked, at its place, when the
     /// scene is built).
+    /// The system is asked for the render's peak memory too (see
+    /// [`pathtracer::allocation::check_available`]).
     pub fn check_size(&self, settings: &RenderSettings) -> Result<(), String> {
         let budget = self.scene.memory_budget();
+        let (width, height) = (settings.width as u64, settings.height as u64);
         budget
-            .check_image(settings.width as u64, settings.height as u64)
+            .check_image(width, height)
+            .and_then(|()| {
+                check_available(
+                    MemoryBudget::image_bytes(width, height),
+                    &format!("a {width}x{height} render"),
+                )
+            })
             .map_err(|error| match (self.width, self.height) {
                 (None, None) => error,
                 (Some(w), None) => format!("--width {w}: {error}"),
@@ -267,7 +277,7 @@ impl SamplingOptions {
     /// [`SamplingOptions::check_size`]).
     pub fn film(&self, settings: &RenderSettings) -> Result<Film, String> {
         self.check_size(settings)?;
-        Ok(Film::new(settings.width as usize, settings.height as usize))
+        Film::try_new(settings.width as usize, settings.height as usize)
     }
 }
 
@@ -314,7 +324,7 @@ fn parse_dialect(name: &str) -> Result<Dialect, String> {
 pub fn load_for_render(path: &Path, options: &SceneOptions) -> Result<Scene, String> {
     let mut scene = load_scene(path, &options.load_options()).map_err(|e| e.to_string())?;
     for warning in &scene.warnings {
-        eprintln!("warning: {warning}");
+        pathtracer::stderr_line!("warning: {warning}");
     }
     if let Some(dispersion) = options.dispersion {
         apply_dispersion(&mut scene, dispersion);
@@ -327,7 +337,7 @@ pub fn load_for_render(path: &Path, options: &SceneOptions) -> Result<Scene, Str
 /// that parts of renders with and without the flag do not merge.
 pub fn apply_dispersion(scene: &mut Scene, dispersion: Dispersion) {
     if apply_channels(&mut scene.materials, dispersion) == 0 {
-        eprintln!("warning: '--dispersion' is not rendered: no material refracts");
+        pathtracer::stderr_line!("warning: '--dispersion' is not rendered: no material refracts");
         return;
     }
     if let Dispersion::Channels(indices) = dispersion {
@@ -367,10 +377,10 @@ fn parse_dispersion(text: &str) -> Result<Dispersion, String> {
 pub fn prepare(scene: &mut Scene, settings: &RenderSettings) -> World {
     settings.look.adapt(scene);
     for note in pathtracer::integrator::media_notes(scene, settings.integrator) {
-        eprintln!("note: {note}");
+        pathtracer::stderr_line!("note: {note}");
     }
     for notice in pathtracer::integrator::dispersion_notes(scene, settings.integrator) {
-        eprintln!("{notice}");
+        pathtracer::stderr_line!("{notice}");
     }
     World::build_with(scene, settings.look.shape_rules())
 }

@@ -115,6 +115,9 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let encoding = args.encoding.encoding();
     encoding.check()?;
     let mut image_file = PendingFile::reserve(&output)?;
+    // The checkpoint's name fits and its folder takes files: a signal or
+    // the first interval can save the render.
+    drop(PendingFile::reserve(&checkpoint)?);
     let mut sidecar_file = match is_hdr(&output) {
         true => Some(PendingFile::reserve(&sidecar_path(&output))?),
         false => None,
@@ -151,9 +154,9 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     };
     let mut film = args.sampling.film(&settings)?;
     if args.resume {
-        match checkpoints.read()? {
+        match checkpoints.read(args.sampling.scene.memory_budget())? {
             Some(partial) => film = partial,
-            None => eprintln!(
+            None => pathtracer::stderr_line!(
                 "warning: {}: no checkpoint to resume: rendering from the first sample",
                 checkpoints.path.display()
             ),
