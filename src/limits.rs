@@ -52,6 +52,10 @@ pub const MAX_TEXTURE_BYTES: u64 = 512 << 20;
 /// of 32x2,097,120. Panoramas stay far below it.
 pub const MAX_ASPECT_RATIO: usize = 64;
 
+/// Warnings of one kind kept (and printed) for one scene file; the others
+/// are counted in one more warning (`scene::build::warning_tally`).
+pub const MAX_WARNINGS_PER_KIND: usize = 5;
+
 /// Most control points of one Bezier or B-spline curve.
 pub const MAX_CONTROL_POINTS: usize = 4_096;
 

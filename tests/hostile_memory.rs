@@ -93,3 +93,33 @@ fn compare_of_a_65535_by_1_image_with_a_1_by_65535_one_resampled_to_2_million_ro
     assert_eq!(ran.code, Some(0), "{}", ran.stderr);
     assert!(ran.stdout.contains("same"), "{}", ran.stdout);
 }
+
+#[test]
+fn a_10_mb_file_of_stray_numbers_took_1_gb_and_printed_5_million_warnings() {
+    let dir = fresh_dir("stray-numbers");
+    let mut text = String::from(
+        "PerspectiveCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 angle 30 width 8 height 8 }\n\
+         Materials { Material { diffuseColor 1 1 1 } }\n\
+         Group { Sphere { center 0 0 0 radius 1 } }\n",
+    );
+    // 8 MiB: the parser held about 100 bytes per byte of it (800 MB),
+    // beyond the 1 GB given here with the process's own; about 18 now.
+    text.push_str(&"1 ".repeat(4 << 20));
+    std::fs::write(dir.join("stray.txt"), text).expect("scene");
+    let ran = run_limited(&dir, &["check", "stray.txt"]);
+    assert_eq!(ran.code, Some(0), "{}", ran.stderr);
+    let warnings = ran
+        .stderr
+        .lines()
+        .filter(|l| l.starts_with("warning:"))
+        .count();
+    let limit = pathtracer::limits::MAX_WARNINGS_PER_KIND;
+    assert_eq!(warnings, limit + 1, "{}", ran.stderr);
+    let counted = (4 << 20) - limit;
+    assert!(
+        ran.stderr
+            .contains(&format!("{counted} more warnings like")),
+        "{}",
+        ran.stderr
+    );
+}

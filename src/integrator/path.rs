@@ -35,7 +35,7 @@
 use crate::bsdf::{Bsdf, GlassChoice, LobeSet};
 use crate::color::Color;
 use crate::look::Miss;
-use crate::math::{Point3, Ray, Vec3};
+use crate::math::{Point3, Ray, Vec3, shadow_reach};
 use crate::sampler::Sampler;
 use crate::shading::Shading;
 use crate::spectral::PathSpectrum;
@@ -374,10 +374,8 @@ fn light_sample(
         return Color::BLACK;
     }
     let shadow = Ray::new(at.spawn_origin(&light.direction), light.direction, time);
-    if view
-        .world
-        .occluded(&shadow, 0.0, light.distance * (1.0 - SHADOW_SHORTENING))
-    {
+    let reach = shadow_reach(&shadow.origin, &light.point, SHADOW_SHORTENING);
+    if view.world.occluded(&shadow, 0.0, reach) {
         return Color::BLACK;
     }
     let weight = if mis {

@@ -28,7 +28,7 @@ use std::f64::consts::PI;
 use crate::bsdf::{Bsdf, GlassChoice};
 use crate::color::Color;
 use crate::lights::LightSample;
-use crate::math::{Point3, Ray, Vec3};
+use crate::math::{Point3, Ray, Vec3, shadow_reach};
 use crate::medium::{Flight, Medium};
 use crate::sampler::Sampler;
 use crate::scene::model::{Material, Scene};
@@ -148,7 +148,7 @@ pub fn radiance(view: &SceneView, mut ray: Ray, sampler: &mut Sampler) -> Color 
                         medium
                     };
                     let from = at.spawn_origin(&light.direction);
-                    let reach = light.distance * (1.0 - SHADOW_SHORTENING);
+                    let reach = shadow_reach(&from, &light.point, SHADOW_SHORTENING);
                     let seen = transmittance(view, from, light.direction, reach, start, ray.time);
                     if !seen.is_black() {
                         let bsdf_pdf = bsdf.pdf(&wo, &light.direction) / smooth;

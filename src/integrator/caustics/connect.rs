@@ -8,7 +8,7 @@ use super::{connection_weight, density_ratio};
 use crate::camera::{Camera, Projection};
 use crate::color::Color;
 use crate::integrator::{CameraSample, SceneView, Splats};
-use crate::math::{Point3, Ray, Vec3, offset_origin};
+use crate::math::{Point3, Ray, Vec3, offset_origin, shadow_reach};
 use crate::shading::Shading;
 use crate::subpixel::{covering_pixels, filter_density};
 
@@ -32,10 +32,8 @@ pub fn connect(view: &SceneView, at: &Shading, f: Color, y: &CausticVertex) -> C
         return Color::BLACK;
     };
     let shadow = Ray::new(at.spawn_origin(&w), w, y.time);
-    if view
-        .world
-        .occluded(&shadow, 0.0, distance * (1.0 - SHADOW_SHORTENING))
-    {
+    let reach = shadow_reach(&shadow.origin, &y.point, SHADOW_SHORTENING);
+    if view.world.occluded(&shadow, 0.0, reach) {
         return Color::BLACK;
     }
     let weight = connection_weight(edge, y.shading_ratio, y.emission_density);

@@ -73,10 +73,11 @@ pub fn read(context: &mut Context, named: &PathRef) -> Result<Descriptor, SceneE
         options: context.options,
         dialect: context.dialect,
         warnings: Vec::new(),
+        tally: Default::default(),
         assets: Vec::new(),
     };
     let result = describe(&mut inner, &document.items, context.file);
-    context.warnings.append(&mut inner.warnings);
+    context.warnings.append(&mut inner.take_warnings());
     context.assets.push(file.clone());
     context.assets.append(&mut inner.assets);
     result

@@ -75,13 +75,13 @@ impl ObjectBuilder {
                         children.push(object);
                     }
                 }
-                ItemKind::Word(key) if key == "numObjects" => {
+                ItemKind::Word(key) if &**key == "numObjects" => {
                     expected = Some((cursor.integer(context, key)?, item.location));
                 }
-                ItemKind::Word(key) if key == "MaterialIndex" || key == "materialIndex" => {
+                ItemKind::Word(key) if &**key == "MaterialIndex" || &**key == "materialIndex" => {
                     self.select_material(context, &mut cursor, key)?;
                 }
-                ItemKind::Word(key) if key != "-" => {
+                ItemKind::Word(key) if &**key != "-" => {
                     context.skip_field(&mut cursor, key, item.location, &block.name)?
                 }
                 _ => context.skip_item(item, &block.name)?,

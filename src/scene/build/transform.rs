@@ -21,7 +21,7 @@ pub fn build_transform(
     let mut cursor = Cursor::of(block);
     while let Some(item) = cursor.next() {
         match &item.kind {
-            ItemKind::Word(op) => match op.as_str() {
+            ItemKind::Word(op) => match &**op {
                 "Translate" => {
                     matrix *= Matrix::new_translation(&cursor.vec3(context, op)?);
                 }
@@ -30,7 +30,7 @@ pub fn build_transform(
                 }
                 "UniformScale" => matrix *= Matrix::new_scaling(cursor.number(context, op)?),
                 "XRotate" | "YRotate" | "ZRotate" => {
-                    let axis = match op.as_str() {
+                    let axis = match &**op {
                         "XRotate" => Vec3::x(),
                         "YRotate" => Vec3::y(),
                         _ => Vec3::z(),
