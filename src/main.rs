@@ -59,6 +59,7 @@ fn main() -> ExitCode {
     let failed = match result {
         Ok(()) => false,
         Err(message) => {
+            let message = pathtracer::scene::error::printable(&message, true);
             pathtracer::stderr_line!("error: {message}");
             true
         }

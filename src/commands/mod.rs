@@ -155,7 +155,7 @@ pub struct SamplingOptions {
     pub max_depth: Option<u32>,
     /// BIASED: scale every sample down to at most this luminance, trading
     /// energy for the absence of fireflies. Off by default.
-    #[arg(long)]
+    #[arg(long, value_parser = parse_positive)]
     pub clamp: Option<f64>,
     /// Path integrator without its strategies for caustics (light subpaths:
     /// light tracing and connections; split bounces at diffuse vertices seen
@@ -222,6 +222,14 @@ impl SamplingOptions {
             light_paths: !self.no_light_paths,
             look,
         }
+    }
+}
+
+/// A finite number above 0 (`nan`, `inf`, 0 and negative numbers are refused).
+pub(crate) fn parse_positive(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(value) if value.is_finite() && value > 0.0 => Ok(value),
+        _ => Err(format!("'{text}': expected a finite number above 0")),
     }
 }
 

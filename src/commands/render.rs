@@ -35,10 +35,11 @@ pub struct RenderArgs {
     spp: u32,
     /// Stop each pixel once its relative error (standard error of the mean
     /// luminance over the mean) is at most this, e.g. 0.01.
-    #[arg(long)]
+    #[arg(long, value_parser = super::parse_positive)]
     target_error: Option<f64>,
-    /// Stop the whole render within this many seconds of rendering.
-    #[arg(long)]
+    /// Stop the whole render within this many seconds of rendering (up to
+    /// a year).
+    #[arg(long, value_parser = parse_time_budget)]
     time_budget: Option<f64>,
     #[command(flatten)]
     encoding: EncodingOptions,
@@ -61,6 +62,16 @@ pub struct RenderArgs {
     /// settings); without one, start from the first sample.
     #[arg(long)]
     resume: bool,
+}
+
+/// A time budget: more than 0 and at most a year of seconds.
+fn parse_time_budget(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(seconds) if seconds > 0.0 && seconds <= 365.0 * 86400.0 => Ok(seconds),
+        _ => Err(format!(
+            "'{text}': seconds, more than 0 and at most 31536000 (a year)"
+        )),
+    }
 }
 
 /// A checkpoint interval: 0 (none while rendering) or 0.1 s to a day.

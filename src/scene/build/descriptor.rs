@@ -52,11 +52,7 @@ pub fn read(context: &mut Context, named: &PathRef) -> Result<Descriptor, SceneE
     let file = match paths::resolve(&named.path, context.file, context.options) {
         Ok(file) => file,
         Err(tried) => {
-            let missing = format!(
-                "texture descriptor '{}' not found (tried {})",
-                named.path,
-                paths::describe_tried(&tried)
-            );
+            let missing = paths::missing("texture descriptor", &named.path, &tried);
             return missing_file(context, named.location, missing);
         }
     };
@@ -196,11 +192,7 @@ fn image(
     match paths::resolve(&named.path, scene, context.options) {
         Ok(file) => Ok(Descriptor::Image(file)),
         Err(tried) => {
-            let missing = format!(
-                "texture '{}' not found (tried {})",
-                named.path,
-                paths::describe_tried(&tried)
-            );
+            let missing = paths::missing("texture", &named.path, &tried);
             missing_file(context, named.location, missing)
         }
     }

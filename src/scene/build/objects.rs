@@ -221,10 +221,7 @@ impl ObjectBuilder {
         let path = match paths::resolve(relative, context.file, context.options) {
             Ok(path) => path,
             Err(tried) => {
-                let missing = format!(
-                    "mesh '{relative}' not found (tried {})",
-                    paths::describe_tried(&tried)
-                );
+                let missing = paths::missing("mesh", relative, &tried);
                 if context.options.missing_assets == MissingAssets::Error {
                     return Err(context.error(at, missing));
                 }
