@@ -7,7 +7,7 @@ mod common;
 
 use std::path::Path;
 
-use common::{fresh_dir, run_in, smallpt};
+use common::{fresh_dir, render_small, run_in};
 
 /// An uncompressed 24-bit TGA of `width` x `height`, rows from the top,
 /// every pixel `bgr`.
@@ -39,23 +39,7 @@ fn texture_scene(dir: &Path, texture: &str) -> String {
 fn tga_and_pfm_textures_were_an_unrecognised_image_format() {
     let dir = fresh_dir("tga-pfm-textures");
     tga(&dir.join("red.tga"), 4, 2, [0, 0, 255]);
-    let scene = smallpt();
-    let written = run_in(
-        &dir,
-        &[
-            "render",
-            scene.to_str().expect("utf-8 path"),
-            "-o",
-            "box.pfm",
-            "--width",
-            "8",
-            "--height",
-            "6",
-            "--spp",
-            "1",
-            "--quiet",
-        ],
-    );
+    let written = render_small(&dir, "box.pfm", &["--quiet"]);
     assert_eq!(written.code, Some(0), "{}", written.stderr);
     for texture in ["red.tga", "box.pfm"] {
         let scene = texture_scene(&dir, texture);

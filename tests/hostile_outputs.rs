@@ -8,11 +8,9 @@
 
 mod common;
 
-use std::path::Path;
-use std::time::Duration;
-
-use common::{command_in, fresh_dir, leftovers, run_in, smallpt, wait_within};
+use common::{fresh_dir, interrupt_long_render, leftovers, render_small, run_in, smallpt};
 use pathtracer::limits::MAX_FILE_NAME_BYTES;
+use std::path::Path;
 
 /// The names in `dir` that end with `suffix`.
 fn named(dir: &Path, suffix: &str) -> Vec<String> {
@@ -28,27 +26,14 @@ fn named(dir: &Path, suffix: &str) -> Vec<String> {
 fn an_output_name_of_255_bytes_had_no_room_for_its_sidecar() {
     let dir = fresh_dir("long-sidecar");
     let name = format!("{}.pfm", "s".repeat(MAX_FILE_NAME_BYTES - 4));
-    let scene = smallpt();
-    let args = [
-        "render",
-        scene.to_str().expect("utf-8 path"),
-        "-o",
-        &name,
-        "--width",
-        "8",
-        "--height",
-        "6",
-        "--spp",
-        "1",
-    ];
-    let ran = run_in(&dir, &args);
+    let ran = render_small(&dir, &name, &[]);
     assert_eq!(ran.code, Some(0), "{}", ran.stderr);
     assert!(dir.join(&name).is_file());
     let sidecars = named(&dir, ".json");
     assert_eq!(sidecars.len(), 1, "{sidecars:?}");
     assert!(sidecars[0].len() <= MAX_FILE_NAME_BYTES);
     // The same output gets the same sidecar name (a second render replaces it).
-    let again = run_in(&dir, &args);
+    let again = render_small(&dir, &name, &[]);
     assert_eq!(again.code, Some(0), "{}", again.stderr);
     assert_eq!(named(&dir, ".json"), sidecars);
 }
@@ -57,34 +42,7 @@ fn an_output_name_of_255_bytes_had_no_room_for_its_sidecar() {
 fn sigint_with_a_246_byte_output_name_saved_nothing() {
     let dir = fresh_dir("long-checkpoint");
     let name = format!("{}.png", "c".repeat(246 - 4));
-    let scene = smallpt();
-    let args = [
-        "render",
-        scene.to_str().expect("utf-8 path"),
-        "-o",
-        &name,
-        "--width",
-        "32",
-        "--height",
-        "24",
-        "--spp",
-        "1000000",
-        "--checkpoint",
-        "0",
-        "--quiet",
-    ];
-    let child = command_in(&dir, &args).spawn().expect("the binary runs");
-    let started = std::time::Instant::now();
-    while leftovers(&dir).is_empty() && started.elapsed() < Duration::from_secs(20) {
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    std::thread::sleep(Duration::from_millis(500));
-    let status = std::process::Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .expect("kill runs");
-    assert!(status.success());
-    let ran = wait_within(child, Duration::from_secs(60));
+    let ran = interrupt_long_render(&dir, &name, "INT");
     assert_eq!(ran.code, Some(130), "{}", ran.stderr);
     let checkpoints = named(&dir, ".checkpoint.exr");
     assert_eq!(checkpoints.len(), 1, "{}", ran.stderr);

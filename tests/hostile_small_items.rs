@@ -8,7 +8,7 @@ mod common;
 
 use std::path::Path;
 
-use common::{fresh_dir, make_fifo, run_in, smallpt};
+use common::{fresh_dir, make_fifo, render_small, run_in};
 
 const CAMERA: &str = "PerspectiveCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 angle 30 \
                       width 8 height 8 }\nMaterials { Material { diffuseColor 1 1 1 } }\n";
@@ -162,31 +162,18 @@ fn kd_nan_ke_inf_and_d_nan_in_an_mtl_were_accepted_silently() {
 #[test]
 fn nan_clamp_target_error_time_budget_and_a_tiny_ppd_were_accepted() {
     let dir = fresh_dir("nan-options");
-    let scene = smallpt();
-    let scene = scene.to_str().expect("utf-8 path");
     for option in [
         ["--clamp", "nan"],
         ["--target-error", "nan"],
         ["--time-budget", "nan"],
         ["--time-budget", "1e300"],
     ] {
-        let ran = run_in(
-            &dir,
-            &[
-                "render", scene, "-o", "x.png", "--width", "8", "--height", "6", "--spp", "1",
-                option[0], option[1],
-            ],
-        );
+        let ran = render_small(&dir, "x.png", &option);
         assert_eq!(ran.code, Some(2), "{option:?}: {}", ran.stderr);
         assert!(ran.stderr.contains(option[0]), "{}", ran.stderr);
     }
     assert!(!dir.join("x.png").exists());
-    let image = run_in(
-        &dir,
-        &[
-            "render", scene, "-o", "a.png", "--width", "8", "--height", "6", "--spp", "1",
-        ],
-    );
+    let image = render_small(&dir, "a.png", &[]);
     assert_eq!(image.code, Some(0), "{}", image.stderr);
     let ran = run_in(&dir, &["compare", "a.png", "a.png", "--ppd", "1e-300"]);
     assert_eq!(ran.code, Some(2), "{}{}", ran.stdout, ran.stderr);
@@ -226,22 +213,7 @@ fn an_empty_mesh_was_accepted_silently() {
 #[test]
 fn the_readme_said_an_output_in_a_missing_folder_fails_but_it_is_created() {
     let dir = fresh_dir("missing-folder");
-    let scene = smallpt();
-    let ran = run_in(
-        &dir,
-        &[
-            "render",
-            scene.to_str().expect("utf-8 path"),
-            "-o",
-            "new/deeper/x.png",
-            "--width",
-            "8",
-            "--height",
-            "6",
-            "--spp",
-            "1",
-        ],
-    );
+    let ran = render_small(&dir, "new/deeper/x.png", &[]);
     assert_eq!(ran.code, Some(0), "{}", ran.stderr);
     assert!(dir.join("new/deeper/x.png").is_file());
     let readme =

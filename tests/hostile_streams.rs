@@ -13,10 +13,11 @@
 mod common;
 
 use std::path::Path;
-use std::process::Stdio;
-use std::time::Duration;
 
-use common::{command_in, finish, fresh_dir, leftovers, make_fifo, run_in, smallpt, wait_within};
+use common::{
+    command_in, finish, fresh_dir, interrupt_long_render, leftovers, make_fifo, render_small,
+    run_in, smallpt,
+};
 use pathtracer::limits::MAX_TABLE_BYTES;
 
 /// A small scene with a field the parser does not know (one warning).
@@ -142,14 +143,7 @@ fn an_output_onto_a_named_pipe_replaced_it_with_a_file() {
         println!("skipped: no mkfifo");
         return;
     }
-    let scene = smallpt();
-    let scene = scene.to_str().expect("utf-8 path");
-    let ran = run_in(
-        &dir,
-        &[
-            "render", scene, "-o", "o.bmp", "--width", "8", "--height", "6", "--spp", "1",
-        ],
-    );
+    let ran = render_small(&dir, "o.bmp", &[]);
     let error = ran.refused();
     assert!(error.contains("not a regular file"), "{error}");
     use std::os::unix::fs::FileTypeExt;
@@ -163,40 +157,7 @@ fn an_output_onto_a_named_pipe_replaced_it_with_a_file() {
 /// written and no temporary left.
 fn stopped_by(signal: &str, code: i32) {
     let dir = fresh_dir(&format!("signal-{signal}"));
-    let scene = smallpt();
-    let scene = scene.to_str().expect("utf-8 path");
-    let mut command = command_in(
-        &dir,
-        &[
-            "render",
-            scene,
-            "-o",
-            "out.png",
-            "--width",
-            "32",
-            "--height",
-            "24",
-            "--spp",
-            "1000000",
-            "--checkpoint",
-            "0",
-            "--quiet",
-        ],
-    );
-    command.stderr(Stdio::piped());
-    let child = command.spawn().expect("the binary runs");
-    // Rendering has started once the temporaries are there.
-    let started = std::time::Instant::now();
-    while leftovers(&dir).is_empty() && started.elapsed() < Duration::from_secs(20) {
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    std::thread::sleep(Duration::from_millis(500));
-    let status = std::process::Command::new("kill")
-        .args([format!("-{signal}"), child.id().to_string()])
-        .status()
-        .expect("kill runs");
-    assert!(status.success());
-    let ran = wait_within(child, Duration::from_secs(60));
+    let ran = interrupt_long_render(&dir, "out.png", signal);
     assert_eq!(ran.code, Some(code), "{}", ran.stderr);
     assert!(
         dir.join("out.png.checkpoint.exr").is_file(),

@@ -37,7 +37,7 @@ pub fn build_text(text: &str, file: &Path, options: &LoadOptions) -> Option<Scen
 pub fn prepare(scene: &mut Scene) -> (Look, World) {
     let (look, _) = Look::detect(scene);
     look.adapt(scene);
-    let world = World::build_with(scene, look.one_sided_planes);
+    let world = World::build_with(scene, look.shape_rules());
     (look, world)
 }
 

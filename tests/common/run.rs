@@ -108,3 +108,50 @@ pub fn make_fifo(path: &Path) -> bool {
 pub fn smallpt() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("testcases/smallpt.txt")
 }
+
+/// Renders smallpt's box in `dir` into `output` at 8x6 and 1 spp, with
+/// `extra` arguments after those.
+pub fn render_small(dir: &Path, output: &str, extra: &[&str]) -> Ran {
+    let scene = smallpt();
+    let scene = scene.to_str().expect("a UTF-8 path");
+    let mut args = vec![
+        "render", scene, "-o", output, "--width", "8", "--height", "6", "--spp", "1",
+    ];
+    args.extend_from_slice(extra);
+    run_in(dir, &args)
+}
+
+/// Starts a render of smallpt's box in `dir` into `output` that would take
+/// minutes (32x24 at a million spp, checkpoints only when stopped), sends
+/// it `signal` (a name for `kill`: `INT`, `HUP`, ...) once it renders (its
+/// temporaries exist, and half a second later), and waits for it to end.
+pub fn interrupt_long_render(dir: &Path, output: &str, signal: &str) -> Ran {
+    let scene = smallpt();
+    let args = [
+        "render",
+        scene.to_str().expect("a UTF-8 path"),
+        "-o",
+        output,
+        "--width",
+        "32",
+        "--height",
+        "24",
+        "--spp",
+        "1000000",
+        "--checkpoint",
+        "0",
+        "--quiet",
+    ];
+    let child = command_in(dir, &args).spawn().expect("the binary runs");
+    let started = Instant::now();
+    while leftovers(dir).is_empty() && started.elapsed() < Duration::from_secs(20) {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(500));
+    let status = Command::new("kill")
+        .args([format!("-{signal}"), child.id().to_string()])
+        .status()
+        .expect("kill runs");
+    assert!(status.success(), "kill -{signal}");
+    wait_within(child, Duration::from_secs(60))
+}
