@@ -1,7 +1,8 @@
 //! Reading a texture image: a regular file within
 //! [`MAX_TEXTURE_BYTES`], whose header is checked against the memory budget
 //! before it is decoded (a small file may claim a huge image), decoded into
-//! linear [0, 1] texels (no gamma conversion).
+//! linear texels (no gamma conversion): 8-bit values in [0, 1], PFM values
+//! as stored.
 
 use std::path::Path;
 
