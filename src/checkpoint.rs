@@ -15,21 +15,22 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::film::Film;
-use crate::film_file::{encode_film, read_film};
+use crate::film_file::{encode_film, read_film_within};
 use crate::image_io::write_atomically;
+use crate::limits::MemoryBudget;
 use crate::render::{RenderStats, Renderer, Samples, Stop, Stopped};
 use crate::render_job::{JobHeader, first_difference};
+use crate::side_files::side_file_path;
 
 /// Seconds between checkpoints by default. Writing the film of a 1024x768
 /// render takes a fraction of a second (the render summary prints it), a small part of
 /// this interval; a render killed loses at most this much work.
 pub const CHECKPOINT_SECONDS: f64 = 60.0;
 
-/// `<output>.checkpoint.exr`.
+/// `<output>.checkpoint.exr`, cut to a name that fits (see
+/// [`side_file_path`]).
 pub fn checkpoint_path(output: &Path) -> PathBuf {
-    let mut path = output.as_os_str().to_os_string();
-    path.push(".checkpoint.exr");
-    PathBuf::from(path)
+    side_file_path(output, ".checkpoint.exr")
 }
 
 /// Where and how often one render writes its checkpoints.
@@ -75,13 +76,14 @@ impl Checkpoints {
 
     /// The film of the checkpoint, if the file exists: refused unless it is
     /// a checkpoint of this very render (same scene bytes and settings) and
-    /// no pixel has more samples than this render asks for.
-    pub fn read(&self) -> Result<Option<Film>, String> {
-        if !self.path.exists() {
+    /// no pixel has more samples than this render asks for. A pipe or a
+    /// device in its place is refused, and so is a film beyond `budget`.
+    pub fn read(&self, budget: MemoryBudget) -> Result<Option<Film>, String> {
+        if std::fs::symlink_metadata(&self.path).is_err() {
             return Ok(None);
         }
         let shown = self.path.display();
-        let (film, header) = read_film(&self.path)?;
+        let (film, header) = read_film_within(&self.path, budget)?;
         if !header.checkpoint {
             return Err(format!("{shown}: a film of a render job, not a checkpoint"));
         }
@@ -110,7 +112,7 @@ impl Checkpoints {
         match std::fs::remove_file(&self.path) {
             Ok(()) => {}
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
-            Err(e) => eprintln!(
+            Err(e) => crate::stderr_line!(
                 "warning: {}: cannot remove the checkpoint of the finished render: {e}",
                 self.path.display()
             ),

@@ -2,6 +2,7 @@
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
+use crate::allocation::{check_available, filled};
 use crate::color::Color;
 use crate::fixed_sum::{FixedColor, FixedSquares};
 use crate::image_io::Image;
@@ -144,11 +145,29 @@ impl Film {
         }
     }
 
-    /// A film, once its size is checked against `budget` (before anything
-    /// is allocated).
+    /// A film of `width` x `height`, or an error if the system refuses the
+    /// memory (see [`crate::allocation`]).
+    pub fn try_new(width: usize, height: usize) -> Result<Film, String> {
+        let pixels = width.saturating_mul(height);
+        Ok(Film {
+            width,
+            height,
+            pixels: filled(pixels, PixelSum::default(), "the film")?,
+            splats: filled(pixels, [0; 3], "the film's light sums")?,
+            light_paths: 0,
+            splats_dropped: 0,
+        })
+    }
+
+    /// A film, once its size is checked against `budget` and the system
+    /// (before anything is allocated).
     pub fn within(width: usize, height: usize, budget: MemoryBudget) -> Result<Film, String> {
         budget.check_image(width as u64, height as u64)?;
-        Ok(Film::new(width, height))
+        check_available(
+            MemoryBudget::image_bytes(width as u64, height as u64),
+            &format!("a {width}x{height} render"),
+        )?;
+        Film::try_new(width, height)
     }
 
     /// Each pixel: the average of its samples plus light tracing's estimate
@@ -232,6 +251,24 @@ impl SplatSums {
             light_paths: AtomicU64::new(0),
             dropped: AtomicU64::new(0),
         }
+    }
+
+    /// [`SplatSums::new`], or an error if the system refuses the memory.
+    pub fn try_new(pixels: usize) -> Result<SplatSums, String> {
+        let count = pixels.saturating_mul(3);
+        let mut sums = Vec::new();
+        if sums.try_reserve_exact(count).is_err() {
+            return Err(format!(
+                "cannot allocate {} for the light sums of a pass: the system refused the memory",
+                crate::limits::show_bytes((count as u64).saturating_mul(8))
+            ));
+        }
+        sums.extend((0..count).map(|_| AtomicU64::new(0)));
+        Ok(SplatSums {
+            sums,
+            light_paths: AtomicU64::new(0),
+            dropped: AtomicU64::new(0),
+        })
     }
 
     /// Adds `value` to pixel `index` (row-major, row 0 at the top),

@@ -25,8 +25,11 @@ use exr::prelude::{
     ReadChannels, ReadLayers, SmallVec, Text, WritableImage, read,
 };
 
+use exr::meta::MetaData;
+
 use crate::film::{Film, PixelSum};
 use crate::fixed_sum::{FixedColor, FixedSquares};
+use crate::limits::{MemoryBudget, read_within};
 use crate::render_job::JobHeader;
 
 /// Written in every film file; a reader refuses other versions.
@@ -100,16 +103,34 @@ pub fn encode_film(path: &Path, film: &Film, header: &JobHeader) -> Result<Vec<u
     Ok(bytes.into_inner())
 }
 
-/// Reads a film file written from [`encode_film`].
+/// Reads a film file written from [`encode_film`], within the default
+/// memory budget (see [`read_film_within`]).
 pub fn read_film(path: &Path) -> Result<(Film, JobHeader), String> {
+    read_film_within(path, MemoryBudget::default())
+}
+
+/// Reads a film file written from [`encode_film`]: a regular file of at
+/// most `budget` bytes (through [`read_within`], so that a pipe or a device
+/// is refused, never waited on), whose header's size fits `budget` before
+/// anything is decoded.
+pub fn read_film_within(path: &Path, budget: MemoryBudget) -> Result<(Film, JobHeader), String> {
     let shown = path.display();
+    let bytes = read_within(path, budget.bytes, "the memory budget, --max-memory")?;
+    let meta = MetaData::read_from_buffered(Cursor::new(&bytes), false)
+        .map_err(|e| format!("{shown}: not a readable film file: {e}"))?;
+    for header in meta.headers.iter() {
+        let size = header.layer_size;
+        budget
+            .check_image(size.x() as u64, size.y() as u64)
+            .map_err(|e| format!("{shown}: {e}"))?;
+    }
     let image = read()
         .no_deep_data()
         .largest_resolution_level()
         .all_channels()
         .first_valid_layer()
         .all_attributes()
-        .from_file(path)
+        .from_buffered(Cursor::new(bytes))
         .map_err(|e| format!("{shown}: not a readable film file: {e}"))?;
     let layer = image.layer_data;
     let attributes: HashMap<String, String> = layer
@@ -180,7 +201,7 @@ pub fn read_film(path: &Path) -> Result<(Film, JobHeader), String> {
         }
         Ok(values)
     };
-    let mut film = Film::new(width, height);
+    let mut film = Film::try_new(width, height)?;
     let mut sums = Vec::new();
     let mut splats = Vec::new();
     for name in CHANNEL_NAMES {

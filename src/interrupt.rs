@@ -1,9 +1,11 @@
-//! SIGINT and SIGTERM: a flag that long loops can read, and the registry of
-//! temporary files to remove before the process exits.
+//! SIGINT, SIGTERM, SIGHUP and SIGQUIT: a flag that long loops can read, and
+//! the registry of temporary files to remove before the process exits.
 //!
-//! [`install`] starts a thread that waits for either signal. By default it
-//! sets the flag, removes every registered temporary file and exits with 128
-//! plus the signal number (130 for SIGINT, 143 for SIGTERM). While a
+//! [`install`] starts a thread that waits for any of [`STOP_SIGNALS`]
+//! (SIGHUP and SIGQUIT, a closed terminal or Ctrl-\, are treated as
+//! SIGTERM). By default it sets the flag, removes every registered temporary
+//! file and exits with 128 plus the signal number (130 for SIGINT, 143 for
+//! SIGTERM, 129 for SIGHUP, 131 for SIGQUIT). While a
 //! [`Graceful`] guard is held (a render that can stop between samples and
 //! write what it has), the first signal only sets the flag that
 //! [`interrupted`] reads; the command finishes its outputs and `main` exits
@@ -36,7 +38,7 @@ pub fn interrupted() -> Option<i32> {
     }
 }
 
-/// While held, the first SIGINT or SIGTERM asks the process to finish (the
+/// While held, the first stopping signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT) asks the process to finish (the
 /// samples in flight, the partial outputs) instead of ending it.
 pub struct Graceful(());
 
@@ -88,13 +90,22 @@ impl Registry {
     }
 }
 
-/// Starts the thread that handles SIGINT and SIGTERM (once per process).
+/// The signals that stop a run as described above: SIGINT, SIGTERM, SIGHUP
+/// and SIGQUIT.
+#[cfg(unix)]
+pub const STOP_SIGNALS: [i32; 4] = [
+    signal_hook::consts::SIGINT,
+    signal_hook::consts::SIGTERM,
+    signal_hook::consts::SIGHUP,
+    signal_hook::consts::SIGQUIT,
+];
+
+/// Starts the thread that handles [`STOP_SIGNALS`] (once per process).
 pub fn install() -> Result<(), String> {
     #[cfg(unix)]
     {
-        use signal_hook::consts::{SIGINT, SIGTERM};
-        let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM])
-            .map_err(|e| format!("cannot handle SIGINT and SIGTERM: {e}"))?;
+        let mut signals = signal_hook::iterator::Signals::new(STOP_SIGNALS)
+            .map_err(|e| format!("cannot handle SIGINT, SIGTERM, SIGHUP and SIGQUIT: {e}"))?;
         std::thread::Builder::new()
             .name("interrupt".to_string())
             .spawn(move || {
@@ -102,7 +113,7 @@ pub fn install() -> Result<(), String> {
                     let first = SIGNAL.load(Ordering::SeqCst) == 0;
                     if first && GRACEFUL.load(Ordering::SeqCst) {
                         SIGNAL.store(signal, Ordering::SeqCst);
-                        eprintln!(
+                        crate::stderr_line!(
                             "\ninterrupted by signal {signal}: finishing the samples in flight and writing what is done (again to stop at once)"
                         );
                     } else {
@@ -120,7 +131,7 @@ fn finish(signal: i32) -> ! {
     SIGNAL.store(signal, Ordering::SeqCst);
     let mut registry = lock();
     registry.remove_all();
-    eprintln!("interrupted by signal {signal}: temporary files removed");
+    crate::stderr_line!("interrupted by signal {signal}: temporary files removed");
     // The registry stays held: no new temporary can appear before the exit.
     std::process::exit(128 + signal)
 }

@@ -9,13 +9,18 @@
 //! [`metrics`] compares images (RMSE, relative MSE, PSNR, SSIM, FLIP, the
 //! look-alike criterion); [`pairs`] measures our renders of reference pairs.
 
+// A failed `eprintln!` panics: messages go through `stderr_line!` (console.rs).
+#![deny(clippy::print_stderr)]
+
 pub mod accel;
 pub mod adaptive;
+pub mod allocation;
 pub mod bsdf;
 pub mod camera;
 pub mod checker;
 pub mod checkpoint;
 pub mod color;
+pub mod console;
 pub mod converge;
 pub mod film;
 pub mod film_file;
@@ -41,6 +46,7 @@ pub mod sampler;
 pub mod sampling;
 pub mod scene;
 pub mod shading;
+pub mod side_files;
 pub mod spectral;
 pub mod subpixel;
 pub mod surface_maps;

@@ -22,11 +22,39 @@ pub const MAX_IMAGE_SIDE: u32 = 65_536;
 /// `check /dev/zero` or a huge file from being read into memory whole.
 pub const MAX_SCENE_BYTES: u64 = 64 << 20;
 
+/// Largest table a command reads: a `plot` curve (CSV) or a `lookalike`
+/// pairs file (TSV), in bytes (16 MiB). A curve of `converge` is a few
+/// hundred bytes and the pairs file of the whole corpus a few kilobytes.
+pub const MAX_TABLE_BYTES: u64 = 16 << 20;
+
+/// Reads a text file through [`read_within`]: a regular file of at most
+/// `max_bytes`, in UTF-8.
+pub fn read_text_within(path: &Path, max_bytes: u64, limit_name: &str) -> Result<String, String> {
+    let bytes = read_within(path, max_bytes, limit_name)?;
+    String::from_utf8(bytes).map_err(|e| {
+        format!(
+            "'{}': not UTF-8 text (byte {})",
+            crate::scene::error::shown_path(path),
+            e.utf8_error().valid_up_to()
+        )
+    })
+}
+
 /// Largest mesh (OBJ) file, in bytes.
 pub const MAX_MESH_BYTES: u64 = 1 << 30;
 
 /// Largest texture image file, in bytes.
 pub const MAX_TEXTURE_BYTES: u64 = 512 << 20;
+
+/// Most a compared image's long side may exceed its short side, as a
+/// factor: the look-alike criterion resamples both images to 32 columns and
+/// the reference's aspect ratio, so a 1x65535 reference would take a grid
+/// of 32x2,097,120. Panoramas stay far below it.
+pub const MAX_ASPECT_RATIO: usize = 64;
+
+/// Warnings of one kind kept (and printed) for one scene file; the others
+/// are counted in one more warning (`scene::build::warning_tally`).
+pub const MAX_WARNINGS_PER_KIND: usize = 5;
 
 /// Most control points of one Bezier or B-spline curve.
 pub const MAX_CONTROL_POINTS: usize = 4_096;

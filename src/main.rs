@@ -1,6 +1,9 @@
 //! Command line: parses arguments, calls the library, prints errors, sets the
 //! exit code. Each subcommand lives in `commands/`.
 
+// A failed `eprintln!` panics: messages go through `stderr_line!` (console.rs).
+#![deny(clippy::print_stderr)]
+
 mod commands;
 
 use std::process::ExitCode;
@@ -41,7 +44,7 @@ enum Command {
 fn main() -> ExitCode {
     let command = Cli::parse().command;
     if let Err(message) = pathtracer::interrupt::install() {
-        eprintln!("warning: {message}");
+        pathtracer::stderr_line!("warning: {message}");
     }
     let result = match command {
         Command::Check(args) => commands::check::run(&args),
@@ -56,7 +59,8 @@ fn main() -> ExitCode {
     let failed = match result {
         Ok(()) => false,
         Err(message) => {
-            eprintln!("error: {message}");
+            let message = pathtracer::scene::error::printable(&message, true);
+            pathtracer::stderr_line!("error: {message}");
             true
         }
     };

@@ -194,6 +194,20 @@ pub fn offset_origin(point: &Point3, normal: &Vec3, direction: &Vec3) -> Point3 
     }
 }
 
+/// How far a shadow ray from `origin` (spawned off its surface by
+/// [`offset_origin`]) towards `point`, a point on another surface, may
+/// reach without finding that surface: the distance from `origin` itself,
+/// less `shortening` of it and [`OFFSET_SCALE`] of `point`'s magnitude (its
+/// rounding). Measured from the shading point instead, the reach would
+/// overshoot by the origin's offset, which far from the scene's origin
+/// (1e7) outgrows a relative shortening: the shadow ray would find the
+/// light it aims at.
+#[inline]
+pub fn shadow_reach(origin: &Point3, point: &Point3, shortening: f64) -> f64 {
+    let distance = (point - origin).norm();
+    distance * (1.0 - shortening) - OFFSET_SCALE * point.amax()
+}
+
 /// `1 / direction` per component (`±inf` for zero components, never NaN).
 #[inline]
 pub fn inverse_direction(direction: &Vec3) -> Vec3 {

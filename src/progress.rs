@@ -98,14 +98,14 @@ impl Progress {
             }
             let line = self.line();
             if terminal {
-                eprint!("\r{line}    ");
+                crate::stderr_text!("\r{line}    ");
                 printed = true;
                 if over {
-                    eprintln!();
+                    crate::stderr_line!();
                     return;
                 }
             } else {
-                eprintln!("{line}");
+                crate::stderr_line!("{line}");
             }
         }
     }

@@ -262,11 +262,11 @@ impl<'a> Renderer<'a> {
             ));
         }
         // Light tracing's sums, only where light subpaths run.
-        let splat_sums = SplatSums::new(if self.scene.light_paths() {
+        let splat_sums = SplatSums::try_new(if self.scene.light_paths() {
             width * height
         } else {
             0
-        });
+        })?;
         let before = (film.samples(), film.dropped(), film.fireflies());
         let start = Instant::now();
         let stopping = AtomicBool::new(false);

@@ -318,20 +318,20 @@ fn nested_document(depth: usize) -> Document {
     let at = Location { line: 1, column: 1 };
     let mut inner = Item {
         location: at,
-        kind: ItemKind::Block(Block {
+        kind: ItemKind::Block(Box::new(Block {
             name: "Group".into(),
             items: Vec::new(),
             close: at,
-        }),
+        })),
     };
     for _ in 0..depth {
         inner = Item {
             location: at,
-            kind: ItemKind::Block(Block {
+            kind: ItemKind::Block(Box::new(Block {
                 name: "Group".into(),
                 items: vec![inner],
                 close: at,
-            }),
+            })),
         };
     }
     let camera = parse("PerspectiveCamera { width 2 height 2 }", Path::new("t.txt"))

@@ -22,12 +22,12 @@ pub fn run(args: &CheckArgs) -> Result<(), String> {
         match load_scene(path, &args.scene_options.load_options()) {
             Ok(scene) => {
                 for warning in &scene.warnings {
-                    eprintln!("warning: {warning}");
+                    pathtracer::stderr_line!("warning: {warning}");
                 }
                 say!("{}: {}", path.display(), summary(&scene));
             }
             Err(error) => {
-                eprintln!("error: {error}");
+                pathtracer::stderr_line!("error: {error}");
                 failures += 1;
             }
         }

@@ -79,11 +79,17 @@ pub fn run(args: &CompareArgs) -> Result<(), String> {
     Ok(())
 }
 
+/// Pixels per degree FLIP is defined for: far below and above any screen
+/// (about 20 to 200); at 1e-300 its filters degenerate to NaN.
+const PPD_RANGE: std::ops::RangeInclusive<f64> = 0.1..=1000.0;
+
 fn parse_ppd(text: &str) -> Result<f64, String> {
     match text.parse::<f64>() {
-        Ok(ppd) if ppd.is_finite() && ppd > 0.0 => Ok(ppd),
+        Ok(ppd) if PPD_RANGE.contains(&ppd) => Ok(ppd),
         _ => Err(format!(
-            "'{text}' is not a positive number of pixels per degree"
+            "'{text}': expected pixels per degree from {} to {}",
+            PPD_RANGE.start(),
+            PPD_RANGE.end()
         )),
     }
 }
@@ -103,7 +109,7 @@ pub fn convert(args: &ConvertArgs) -> Result<(), String> {
     let encoding = args.encoding.encoding();
     encoding.check()?;
     if is_hdr(&args.output) && encoding != Encoding::default() {
-        eprintln!(
+        pathtracer::stderr_line!(
             "warning: --gamma, --exposure and --tonemap apply to 8-bit outputs; {} stays linear",
             args.output.display()
         );

@@ -8,7 +8,9 @@ use clap::Args;
 use pathtracer::converge::{Reach, converge_within, read_csv_series, time_to_reach, to_csv};
 use pathtracer::image_io::{
     Encoding, PendingFile, commit_together, encode_image, read_image, refuse_inputs,
+    refuse_shared_outputs,
 };
+use pathtracer::limits::{MAX_TABLE_BYTES, read_text_within};
 use pathtracer::plot::{Series, check_plottable, log_log_svg};
 use pathtracer::render::render_within;
 
@@ -68,6 +70,7 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
         .into_iter()
         .chain(reference_file.as_ref())
         .collect();
+    refuse_shared_outputs(&outputs)?;
     refuse_inputs(&outputs, &inputs)?;
     let settings = args.sampling.settings(&scene, args.max_spp, false);
     args.sampling.check_size(&settings)?;
@@ -82,13 +85,13 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
                 args.sampling
                     .settings(scene.description(), args.reference_spp, true);
             reference_settings.seed = settings.seed.wrapping_add(REFERENCE_SEED_OFFSET);
-            eprintln!(
+            pathtracer::stderr_line!(
                 "rendering a reference at {} spp into {}",
                 args.reference_spp,
                 path.display()
             );
             let (image, stats) = render_within(&scene, &reference_settings, budget)?;
-            eprintln!("reference took {:.1} s", stats.seconds);
+            pathtracer::stderr_line!("reference took {:.1} s", stats.seconds);
             file.write(&encode_image(&path, &image, &Encoding::gamma(None))?)?;
             file.commit()?;
             image
@@ -156,8 +159,8 @@ pub fn plot(args: &PlotArgs) -> Result<(), String> {
             }
         };
         refuse_inputs(&[&output], &[("a curve to plot", path.as_path())])?;
-        let text =
-            std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let text = read_text_within(&path, MAX_TABLE_BYTES, "limits::MAX_TABLE_BYTES")
+            .map_err(|e| format!("cannot read the curve: {e}"))?;
         let points =
             read_csv_series(&text, &args.column).map_err(|e| format!("{}: {e}", path.display()))?;
         if let Some(target) = args.time_to {

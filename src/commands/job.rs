@@ -6,7 +6,6 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use pathtracer::film::Film;
 use pathtracer::film_file::encode_film;
 use pathtracer::image_io::{PendingFile, check_writable, refuse_inputs};
 use pathtracer::render::render_into;
@@ -72,7 +71,7 @@ pub fn run(
     crop.check(settings.width, settings.height)?;
     check_writable(part, settings.width as usize, settings.height as usize)?;
     let scene = render_scene(scene, &settings);
-    let mut film = Film::new(settings.width as usize, settings.height as usize);
+    let mut film = sampling.film(&settings)?;
     crop.restrict(&mut film);
     let stats = render_into(&scene, &settings, &mut film, samples.clone())?;
     let header = JobHeader::new(

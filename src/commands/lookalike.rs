@@ -100,7 +100,7 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
             }
             slug = format!("{}-{n}", pair.slug());
         }
-        eprintln!(
+        pathtracer::stderr_line!(
             "[{}/{}] {}/{} against {}",
             index + 1,
             pairs.len(),
@@ -126,7 +126,7 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
             )
         });
         match &row.outcome {
-            Ok(f) => eprintln!(
+            Ok(f) => pathtracer::stderr_line!(
                 "        {}x{}, {:.1} s: lookalike mean {:.1}, p95 {:.1}, {}; flip {:.4}",
                 f.width,
                 f.height,
@@ -136,7 +136,7 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
                 if f.same { "same" } else { "different" },
                 f.flip
             ),
-            Err(error) => eprintln!("        failed: {error}"),
+            Err(error) => pathtracer::stderr_line!("        failed: {error}"),
         }
         rows.push(row);
     }
@@ -211,9 +211,12 @@ impl PairJob<'_> {
             Err(error) => return self.failed(0.0, false, None, error),
         };
         if (theirs.width, theirs.height) != self.pair.pixels {
-            eprintln!(
+            pathtracer::stderr_line!(
                 "        warning: the render is {}x{}, the pairs file says {}x{}",
-                theirs.width, theirs.height, self.pair.pixels.0, self.pair.pixels.1
+                theirs.width,
+                theirs.height,
+                self.pair.pixels.0,
+                self.pair.pixels.1
             );
         }
         let (width, height) = render_size((theirs.width, theirs.height), self.width);
@@ -236,7 +239,7 @@ impl PairJob<'_> {
         let (look, _) = self.sampling.look(&scene);
         let dialect = Some((scene.dialect.name().to_string(), look.name.to_string()));
         if !scene.warnings.is_empty() {
-            eprintln!(
+            pathtracer::stderr_line!(
                 "        {} warnings (pathtracer check lists them)",
                 scene.warnings.len()
             );

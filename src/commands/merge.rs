@@ -9,6 +9,7 @@ use pathtracer::film::Film;
 use pathtracer::film_file::{encode_film, read_film};
 use pathtracer::image_io::{
     PendingFile, check_writable, commit_together, encode_image, is_hdr, refuse_inputs,
+    refuse_shared_outputs,
 };
 use pathtracer::render_job::{Crop, JobHeader, Part, check_parts};
 
@@ -67,6 +68,7 @@ pub fn run(args: &MergeArgs) -> Result<(), String> {
         .iter()
         .map(|part| ("a part to merge", part.as_path()))
         .collect();
+    refuse_shared_outputs(&outputs)?;
     refuse_inputs(&outputs, &inputs)?;
     let names: Vec<String> = args.parts.iter().map(|p| p.display().to_string()).collect();
     // One film in memory besides the total: parts are added as they are read.
@@ -115,7 +117,7 @@ pub fn run(args: &MergeArgs) -> Result<(), String> {
                 listed.join("; ")
             ));
         }
-        eprintln!("warning: partial merge, missing: {}", listed.join("; "));
+        pathtracer::stderr_line!("warning: partial merge, missing: {}", listed.join("; "));
     }
     let first = &headers[0];
     if let (Some(path), Some(file)) = (&args.film, &mut film_file) {

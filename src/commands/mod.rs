@@ -22,6 +22,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
+use pathtracer::allocation::check_available;
 use pathtracer::film::Film;
 use pathtracer::image_io::{Encoding, Tonemap};
 use pathtracer::integrator::Integrator;
@@ -153,7 +154,7 @@ pub struct SamplingOptions {
     pub max_depth: Option<u32>,
     /// BIASED: scale every sample down to at most this luminance, trading
     /// energy for the absence of fireflies. Off by default.
-    #[arg(long)]
+    #[arg(long, value_parser = parse_positive)]
     pub clamp: Option<f64>,
     /// Path integrator without its strategies for caustics (light subpaths:
     /// light tracing and connections; split bounces at diffuse vertices seen
@@ -222,6 +223,14 @@ impl SamplingOptions {
     }
 }
 
+/// A finite number above 0 (`nan`, `inf`, 0 and negative numbers are refused).
+pub(crate) fn parse_positive(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(value) if value.is_finite() && value > 0.0 => Ok(value),
+        _ => Err(format!("'{text}': expected a finite number above 0")),
+    }
+}
+
 fn parse_progress_every(text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {
         Ok(seconds) if seconds.is_finite() && (0.1..=86_400.0).contains(&seconds) => Ok(seconds),
@@ -249,10 +258,19 @@ impl SamplingOptions {
     /// before anything is allocated, naming `--width`/`--height` when they
     /// chose it (a scene's own size is checked, at its place, when the
     /// scene is built).
+    /// The system is asked for the render's peak memory too (see
+    /// [`pathtracer::allocation::check_available`]).
     pub fn check_size(&self, settings: &RenderSettings) -> Result<(), String> {
         let budget = self.scene.memory_budget();
+        let (width, height) = (settings.width as u64, settings.height as u64);
         budget
-            .check_image(settings.width as u64, settings.height as u64)
+            .check_image(width, height)
+            .and_then(|()| {
+                check_available(
+                    MemoryBudget::image_bytes(width, height),
+                    &format!("a {width}x{height} render"),
+                )
+            })
             .map_err(|error| match (self.width, self.height) {
                 (None, None) => error,
                 (Some(w), None) => format!("--width {w}: {error}"),
@@ -265,7 +283,7 @@ impl SamplingOptions {
     /// [`SamplingOptions::check_size`]).
     pub fn film(&self, settings: &RenderSettings) -> Result<Film, String> {
         self.check_size(settings)?;
-        Ok(Film::new(settings.width as usize, settings.height as usize))
+        Film::try_new(settings.width as usize, settings.height as usize)
     }
 }
 
@@ -312,7 +330,7 @@ fn parse_dialect(name: &str) -> Result<Dialect, String> {
 pub fn load_for_render(path: &Path, options: &SceneOptions) -> Result<Scene, String> {
     let scene = load_scene(path, &options.load_options()).map_err(|e| e.to_string())?;
     for warning in &scene.warnings {
-        eprintln!("warning: {warning}");
+        pathtracer::stderr_line!("warning: {warning}");
     }
     Ok(scene)
 }
@@ -345,7 +363,7 @@ fn parse_dispersion(text: &str) -> Result<Dispersion, String> {
 pub fn render_scene(scene: Scene, settings: &RenderSettings) -> RenderScene {
     let scene = RenderScene::build(scene, &settings.scene());
     for notice in scene.notices(settings.integrator) {
-        eprintln!("{notice}");
+        pathtracer::stderr_line!("{notice}");
     }
     scene
 }

@@ -34,10 +34,11 @@ pub struct RenderArgs {
     spp: u32,
     /// Stop each pixel once its relative error (standard error of the mean
     /// luminance over the mean) is at most this, e.g. 0.01.
-    #[arg(long)]
+    #[arg(long, value_parser = super::parse_positive)]
     target_error: Option<f64>,
-    /// Stop the whole render within this many seconds of rendering.
-    #[arg(long)]
+    /// Stop the whole render within this many seconds of rendering (up to
+    /// a year).
+    #[arg(long, value_parser = parse_time_budget)]
     time_budget: Option<f64>,
     #[command(flatten)]
     encoding: EncodingOptions,
@@ -60,6 +61,16 @@ pub struct RenderArgs {
     /// settings); without one, start from the first sample.
     #[arg(long)]
     resume: bool,
+}
+
+/// A time budget: more than 0 and at most a year of seconds.
+fn parse_time_budget(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(seconds) if seconds > 0.0 && seconds <= 365.0 * 86400.0 => Ok(seconds),
+        _ => Err(format!(
+            "'{text}': seconds, more than 0 and at most 31536000 (a year)"
+        )),
+    }
 }
 
 /// A checkpoint interval: 0 (none while rendering) or 0.1 s to a day.
@@ -114,6 +125,9 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let encoding = args.encoding.encoding();
     encoding.check()?;
     let mut image_file = PendingFile::reserve(&output)?;
+    // The checkpoint's name fits and its folder takes files: a signal or
+    // the first interval can save the render.
+    drop(PendingFile::reserve(&checkpoint)?);
     let mut sidecar_file = match is_hdr(&output) {
         true => Some(PendingFile::reserve(&sidecar_path(&output))?),
         false => None,
@@ -150,9 +164,9 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     };
     let mut film = args.sampling.film(&settings)?;
     if args.resume {
-        match checkpoints.read()? {
+        match checkpoints.read(args.sampling.scene.memory_budget())? {
             Some(partial) => film = partial,
-            None => eprintln!(
+            None => pathtracer::stderr_line!(
                 "warning: {}: no checkpoint to resume: rendering from the first sample",
                 checkpoints.path.display()
             ),

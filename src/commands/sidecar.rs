@@ -6,12 +6,11 @@ use std::path::{Path, PathBuf};
 
 use pathtracer::image_io::Encoding;
 use pathtracer::render_job::JobHeader;
+use pathtracer::side_files::side_file_path;
 
-/// `IMAGE.json`.
+/// `IMAGE.json`, cut to a name that fits (see [`side_file_path`]).
 pub fn sidecar_path(image: &Path) -> PathBuf {
-    let mut sidecar = image.as_os_str().to_os_string();
-    sidecar.push(".json");
-    PathBuf::from(sidecar)
+    side_file_path(image, ".json")
 }
 
 /// What the image holds, besides the render's settings.

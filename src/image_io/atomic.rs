@@ -50,6 +50,7 @@ impl PendingFile {
         if target.is_dir() {
             return Err(format!("{shown}: is a directory"));
         }
+        refuse_special(path, &target)?;
         let directory = match target.parent() {
             Some(parent) if !parent.as_os_str().is_empty() => parent.to_path_buf(),
             _ => PathBuf::from("."),
@@ -183,6 +184,19 @@ pub(super) fn temporary_sibling(directory: &Path, name: &std::ffi::OsStr) -> Pat
     temporary.push("_".repeat(room - cut));
     temporary.push(&suffix);
     directory.join(temporary)
+}
+
+/// An error if `target` exists and is not a regular file: a named pipe, a
+/// device or a socket would be replaced by the rename (or, written
+/// directly, block or swallow the image), so it is refused.
+fn refuse_special(path: &Path, target: &Path) -> Result<(), String> {
+    match fs::metadata(target) {
+        Ok(metadata) if !metadata.is_file() => Err(format!(
+            "{}: is not a regular file (a named pipe, device or socket); refusing to replace it",
+            path.display()
+        )),
+        _ => Ok(()),
+    }
 }
 
 /// `path` with symlinks followed to the file they name (which may not exist

@@ -1,6 +1,7 @@
 //! Refusing an output that is one of the run's inputs (the scene, a mesh, a
 //! texture, a `.mtl`), compared by file identity (device and inode), so that
-//! `./scene.bmp`, another spelling or a hard link of an input is caught.
+//! `./scene.bmp`, another spelling or a hard link of an input is caught; and
+//! two outputs of one run on the same file (one would replace the other).
 
 use std::path::Path;
 
@@ -32,6 +33,42 @@ pub fn refuse_inputs(outputs: &[&PendingFile], inputs: &[(&str, &Path)]) -> Resu
                     "{}: is {role} ({}); refusing to overwrite an input",
                     output.path().display(),
                     input.display()
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Where an output's target is: its canonical path (the folder exists once
+/// the output is reserved), so that `m.exr`, `./m.exr` and a link to it are
+/// one place.
+fn location(target: &Path) -> Option<std::path::PathBuf> {
+    if let Ok(path) = std::fs::canonicalize(target) {
+        return Some(path);
+    }
+    let name = target.file_name()?;
+    let folder = match target.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
+    };
+    std::fs::canonicalize(folder).ok().map(|f| f.join(name))
+}
+
+/// An error if two of `outputs` would write the same file (the same path
+/// in another spelling, or the same existing file under two names).
+pub fn refuse_shared_outputs(outputs: &[&PendingFile]) -> Result<(), String> {
+    for (index, first) in outputs.iter().enumerate() {
+        for second in &outputs[index + 1..] {
+            let same_place = location(first.target())
+                .is_some_and(|place| location(second.target()).as_ref() == Some(&place));
+            let same_file = identity(first.target())
+                .is_some_and(|file| identity(second.target()).as_ref() == Some(&file));
+            if same_place || same_file {
+                return Err(format!(
+                    "{} and {} are the same file: each output of a command needs its own",
+                    first.path().display(),
+                    second.path().display()
                 ));
             }
         }

@@ -28,9 +28,10 @@ pub use atomic::write_file as write_atomically;
 pub use atomic::{PendingFile, TEMPORARY_MARK};
 pub use bmp_format::check_complete as check_bmp_complete;
 pub use commit::commit_together;
-pub use decode::{check_decodable, describe_error};
+pub use decode::{check_decodable, describe_error, reader_for};
 pub use display::DisplayImage;
-pub use inputs::refuse_inputs;
+pub use inputs::{refuse_inputs, refuse_shared_outputs};
+pub use pfm::is_pfm;
 
 use std::path::Path;
 
@@ -183,12 +184,18 @@ pub fn read_image(path: &Path) -> Result<Image, String> {
 /// [`read_image`], and whether the file held display values or linear radiance.
 pub fn read_image_encoded(path: &Path) -> Result<(Image, PixelValues), String> {
     let bytes = decode::read_capped(path)?;
-    let result = if pfm::is_pfm(&bytes) {
-        pfm::decode(&bytes).map(|image| (image, PixelValues::Linear))
+    decode_image(&bytes, path).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Decodes the bytes of an image file read from `path` (whose extension
+/// names the format when its content does not: TGA): PFM, or BMP, PNG,
+/// JPEG, TGA, EXR.
+pub fn decode_image(bytes: &[u8], path: &Path) -> Result<(Image, PixelValues), String> {
+    if pfm::is_pfm(bytes) {
+        pfm::decode(bytes).map(|image| (image, PixelValues::Linear))
     } else {
-        decode::decode_ldr(&bytes)
-    };
-    result.map_err(|e| format!("{}: {e}", path.display()))
+        decode::decode_ldr(bytes, path)
+    }
 }
 
 #[cfg(test)]

@@ -14,7 +14,7 @@ use crate::color::Color;
 const MAX_HEADER_BYTES: usize = 128;
 
 /// Whether `bytes` starts like a PFM file.
-pub(super) fn is_pfm(bytes: &[u8]) -> bool {
+pub fn is_pfm(bytes: &[u8]) -> bool {
     bytes.len() >= 3
         && (bytes.starts_with(b"PF") || bytes.starts_with(b"Pf"))
         && bytes[2].is_ascii_whitespace()
@@ -58,6 +58,15 @@ fn parse_dimension(token: &str, what: &str) -> Result<usize, String> {
         return Err(format!("PFM {what} {value} is outside 1..={MAX_DIMENSION}"));
     }
     Ok(value)
+}
+
+/// The width and height a PFM header claims (checked before decoding).
+pub(super) fn dimensions(bytes: &[u8]) -> Result<(usize, usize), String> {
+    let mut position = 0;
+    next_token(bytes, &mut position)?;
+    let width = parse_dimension(next_token(bytes, &mut position)?, "width")?;
+    let height = parse_dimension(next_token(bytes, &mut position)?, "height")?;
+    Ok((width, height))
 }
 
 /// Decodes a PFM file (`PF` or `Pf`, either byte order) without panicking on bad input.

@@ -16,7 +16,7 @@ use std::f64::consts::PI;
 use crate::bsdf::Bsdf;
 use crate::color::Color;
 use crate::math::{Point3, Vec3};
-use crate::render_scene::RenderScene;
+use crate::render_scene::{RenderScene, ShadowTarget};
 use crate::scene::model::Light;
 use crate::shading::Shading;
 
@@ -49,7 +49,12 @@ pub fn direct(
             continue;
         }
         // At shutter time 0, whatever the path's (as the original).
-        if !scene.unoccluded(at.spawn_origin(&to_light), to_light, distance, 0.0) {
+        if !scene.unoccluded(
+            at.spawn_origin(&to_light),
+            to_light,
+            ShadowTarget::Distance(distance),
+            0.0,
+        ) {
             continue;
         }
         sum += spectrum.factor(reflected) * spectrum.factor(color) * PI;

@@ -44,7 +44,7 @@ use super::caustics::{self, CausticVertex};
 use super::scatter::{bsdf_at, emitter_choice, miss, pa1_lights, sample};
 use super::split;
 use super::{CameraSample, Splats};
-use crate::render_scene::RenderScene;
+use crate::render_scene::{RenderScene, ShadowTarget};
 
 /// Scattering vertices after which Russian roulette may end a path. Within
 /// the original's five vertices every continuation pays for itself (ending
@@ -379,7 +379,12 @@ fn light_sample(
         return Color::BLACK;
     }
     let origin = at.spawn_origin(&light.direction);
-    if !scene.unoccluded(origin, light.direction, light.distance, time) {
+    if !scene.unoccluded(
+        origin,
+        light.direction,
+        ShadowTarget::Surface(light.point),
+        time,
+    ) {
         return Color::BLACK;
     }
     let weight = if mis {

@@ -30,7 +30,7 @@ use crate::color::Color;
 use crate::lights::LightSample;
 use crate::math::{Point3, Ray, Vec3};
 use crate::medium::{Flight, Medium};
-use crate::render_scene::{MAX_CROSSINGS, RenderScene};
+use crate::render_scene::{MAX_CROSSINGS, RenderScene, ShadowTarget};
 use crate::sampler::Sampler;
 use crate::shading::Shading;
 
@@ -143,8 +143,13 @@ pub fn radiance(scene: &RenderScene, mut ray: Ray, sampler: &mut Sampler) -> Col
                         medium
                     };
                     let from = at.spawn_origin(&light.direction);
-                    let (direction, distance) = (light.direction, light.distance);
-                    let seen = scene.transmittance(from, direction, distance, start, ray.time);
+                    let seen = scene.transmittance(
+                        from,
+                        light.direction,
+                        ShadowTarget::Surface(light.point),
+                        start,
+                        ray.time,
+                    );
                     if !seen.is_black() {
                         let bsdf_pdf = bsdf.pdf(&wo, &light.direction) / smooth;
                         let weight = power_heuristic(light.pdf, bsdf_pdf);
@@ -221,7 +226,13 @@ fn medium_light_sample(
         return Color::BLACK;
     };
     let phase = medium.phase.eval(travel, &light.direction);
-    let seen = scene.transmittance(*point, light.direction, light.distance, Some(medium), time);
+    let seen = scene.transmittance(
+        *point,
+        light.direction,
+        ShadowTarget::Surface(light.point),
+        Some(medium),
+        time,
+    );
     if seen.is_black() {
         return Color::BLACK;
     }
@@ -252,7 +263,13 @@ fn surface_pa1_lights(
             continue;
         }
         let from = at.spawn_origin(&way.to_light);
-        let seen = scene.transmittance(from, way.to_light, way.distance, medium, 0.0);
+        let seen = scene.transmittance(
+            from,
+            way.to_light,
+            ShadowTarget::Distance(way.distance),
+            medium,
+            0.0,
+        );
         sum += reflected * way.color * seen * PI;
     }
     sum
@@ -268,7 +285,13 @@ fn medium_pa1_lights(scene: &RenderScene, medium: &Medium, point: &Point3, trave
             continue;
         };
         let phase = medium.phase.eval(travel, &way.to_light);
-        let seen = scene.transmittance(*point, way.to_light, way.distance, Some(medium), 0.0);
+        let seen = scene.transmittance(
+            *point,
+            way.to_light,
+            ShadowTarget::Distance(way.distance),
+            Some(medium),
+            0.0,
+        );
         sum += way.color * seen * (phase * PI);
     }
     sum

@@ -18,6 +18,7 @@ use std::fmt;
 
 use super::resample::box_resize;
 use crate::image_io::DisplayImage;
+use crate::limits::MAX_ASPECT_RATIO;
 
 /// The width both images are resampled to.
 pub const LOOKALIKE_WIDTH: usize = 32;
@@ -58,6 +59,16 @@ pub struct Lookalike {
 pub fn lookalike(test: &DisplayImage, reference: &DisplayImage) -> Result<Lookalike, String> {
     test.validate("test")?;
     reference.validate("reference")?;
+    for (name, image) in [("test", test), ("reference", reference)] {
+        let (long, short) = (image.width.max(image.height), image.width.min(image.height));
+        if long > MAX_ASPECT_RATIO.saturating_mul(short) {
+            return Err(format!(
+                "the {name} image is {}x{}, longer than {MAX_ASPECT_RATIO} times its width or \
+                 height (limits::MAX_ASPECT_RATIO): the look-alike criterion does not compare it",
+                image.width, image.height
+            ));
+        }
+    }
     let width = LOOKALIKE_WIDTH;
     let height = ((width * reference.height) as f64 / reference.width as f64)
         .round()

@@ -15,6 +15,8 @@ pub mod report;
 
 use std::path::{Path, PathBuf};
 
+use crate::limits::{MAX_TABLE_BYTES, read_text_within};
+
 /// How sure the pairing of a scene and a render is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Confidence {
@@ -96,8 +98,8 @@ impl Pair {
 
 /// Reads a pairs file; a malformed line is an error naming its line.
 pub fn read_pairs(path: &Path) -> Result<Vec<Pair>, String> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+    let text = read_text_within(path, MAX_TABLE_BYTES, "limits::MAX_TABLE_BYTES")
+        .map_err(|e| format!("cannot read the pairs: {e}"))?;
     parse_pairs(&text).map_err(|(line, message)| format!("{}:{line}: {message}", path.display()))
 }
 

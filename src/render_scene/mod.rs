@@ -23,7 +23,7 @@ mod visibility;
 
 pub use casters::Casters;
 pub use notices::Notice;
-pub use visibility::{MAX_CROSSINGS, SHADOW_REACH};
+pub use visibility::{MAX_CROSSINGS, SHADOW_REACH, SHADOW_SHORTENING, ShadowTarget};
 
 use crate::camera::{Camera, MIN_LENS_RADIUS};
 use crate::color::Color;

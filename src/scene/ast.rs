@@ -9,16 +9,20 @@ pub struct Item {
     pub kind: ItemKind,
 }
 
+///
+/// Kept to 24 bytes (an [`Item`] to 32), since a scene of numbers holds one
+/// item per two bytes of text: words and lists are boxed slices, blocks
+/// boxed (see `limits::MAX_SCENE_BYTES`).
 #[derive(Clone, Debug, PartialEq)]
 pub enum ItemKind {
     /// A bare word (keyword, path, name).
-    Word(String),
+    Word(Box<str>),
     /// Anything Rust's `f64` parser fully accepts (with at least one digit).
     Number(f64),
     /// `name { items }`; `name` is empty for a brace that follows no word.
-    Block(Block),
+    Block(Box<Block>),
     /// `[ numbers ]`.
-    List(Vec<f64>),
+    List(Box<[f64]>),
 }
 
 #[derive(Clone, Debug, PartialEq)]

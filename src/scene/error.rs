@@ -10,17 +10,42 @@ use crate::limits::{MAX_SHOWN_PATH, MAX_SHOWN_TOKEN};
 /// `MAX_SHOWN_TOKEN` characters, else its first ones and an ellipsis (cut on
 /// a character boundary), so a multi-megabyte token never fills a terminal.
 pub fn shown(token: &str) -> Cow<'_, str> {
-    match token.char_indices().nth(MAX_SHOWN_TOKEN) {
+    let cut = match token.char_indices().nth(MAX_SHOWN_TOKEN) {
         Some((end, _)) => Cow::Owned(format!("{}…", &token[..end])),
         None => Cow::Borrowed(token),
+    };
+    match printable(&cut, false) {
+        Cow::Borrowed(_) => cut,
+        Cow::Owned(escaped) => Cow::Owned(escaped),
     }
+}
+
+/// `text` with its control characters (escape sequences, carriage returns,
+/// bells of a hostile file) written as escapes (`\u{1b}`), so that a
+/// message shows what the file holds and never drives the terminal; line
+/// breaks are kept when `keep_lines`.
+pub fn printable(text: &str, keep_lines: bool) -> Cow<'_, str> {
+    let control = |c: char| c.is_control() && !(keep_lines && c == '\n');
+    if !text.chars().any(control) {
+        return Cow::Borrowed(text);
+    }
+    let mut escaped = String::with_capacity(text.len() + 8);
+    for c in text.chars() {
+        if control(c) {
+            escaped.extend(c.escape_default());
+        } else {
+            escaped.push(c);
+        }
+    }
+    Cow::Owned(escaped)
 }
 
 /// A path as a message shows it: whole up to `MAX_SHOWN_PATH` characters,
 /// else its first and last ones with an ellipsis between (cut on character
 /// boundaries): the start says where it is, the end names the file.
 pub fn shown_path(path: &Path) -> String {
-    let text = path.to_string_lossy();
+    let lossy = path.to_string_lossy();
+    let text = printable(&lossy, false);
     let count = text.chars().count();
     if count <= MAX_SHOWN_PATH {
         return text.into_owned();
@@ -55,7 +80,7 @@ impl fmt::Display for Diagnostic {
             shown_path(&self.file),
             self.location.line,
             self.location.column,
-            self.message
+            printable(&self.message, true)
         )
     }
 }

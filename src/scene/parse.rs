@@ -53,7 +53,9 @@ fn token(input: &str) -> IResult<&str, Token<'_>> {
 /// its lines are.
 struct LineIndex<'a> {
     text: &'a str,
-    starts: Vec<usize>,
+    /// Offsets of line starts; `u32` (4 bytes a line: a file of short lines
+    /// has one every two bytes), since [`parse`] refuses longer texts.
+    starts: Vec<u32>,
     /// The last offset located, its line and its column.
     previous: (usize, usize, usize),
 }
@@ -61,7 +63,7 @@ struct LineIndex<'a> {
 impl<'a> LineIndex<'a> {
     fn new(text: &'a str) -> Self {
         let mut starts = vec![0];
-        starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        starts.extend(text.match_indices('\n').map(|(i, _)| (i + 1) as u32));
         LineIndex {
             text,
             starts,
@@ -70,8 +72,11 @@ impl<'a> LineIndex<'a> {
     }
 
     fn locate(&mut self, offset: usize) -> Location {
-        let line = self.starts.partition_point(|&s| s <= offset).max(1);
-        let start = self.starts.get(line - 1).copied().unwrap_or(0);
+        let line = self
+            .starts
+            .partition_point(|&s| s as usize <= offset)
+            .max(1);
+        let start = self.starts.get(line - 1).map_or(0, |&s| s as usize);
         let (previous_offset, previous_line, previous_column) = self.previous;
         let (from, column) = if previous_line == line && previous_offset <= offset {
             (previous_offset, previous_column)
@@ -114,6 +119,13 @@ fn error(file: &Path, location: Location, message: String) -> SceneError {
 /// A leading byte order mark is skipped (columns are counted after it).
 pub fn parse(text: &str, file: &Path) -> Result<Document, SceneError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if u32::try_from(text.len()).is_err() {
+        return Err(error(
+            file,
+            Location::default(),
+            format!("{} bytes of text, more than a scene can hold", text.len()),
+        ));
+    }
     let mut lines = LineIndex::new(text);
     let mut stack = vec![Frame {
         name: String::new(),
@@ -140,7 +152,7 @@ pub fn parse(text: &str, file: &Path) -> Result<Document, SceneError> {
                     {
                         frame.items.push(Item {
                             location: start,
-                            kind: ItemKind::List(numbers),
+                            kind: ItemKind::List(numbers.into_boxed_slice()),
                         });
                     }
                 }
@@ -185,7 +197,7 @@ pub fn parse(text: &str, file: &Path) -> Result<Document, SceneError> {
                     Some(Item {
                         kind: ItemKind::Word(w),
                         location,
-                    }) => (w, location),
+                    }) => (w.into_string(), location),
                     _ => (String::new(), location),
                 };
                 stack.push(Frame {
@@ -198,16 +210,17 @@ pub fn parse(text: &str, file: &Path) -> Result<Document, SceneError> {
                 if stack.len() < 2 {
                     return Err(error(file, location, "unmatched '}'".into()));
                 }
-                if let Some(frame) = stack.pop()
+                if let Some(mut frame) = stack.pop()
                     && let Some(parent) = stack.last_mut()
                 {
+                    frame.items.shrink_to_fit();
                     parent.items.push(Item {
                         location: frame.location,
-                        kind: ItemKind::Block(Block {
+                        kind: ItemKind::Block(Box::new(Block {
                             name: frame.name,
                             items: frame.items,
                             close: location,
-                        }),
+                        })),
                     });
                 }
             }
@@ -218,7 +231,7 @@ pub fn parse(text: &str, file: &Path) -> Result<Document, SceneError> {
             Token::Text(t) => {
                 let kind = match as_number(t) {
                     Some(n) => ItemKind::Number(n),
-                    None => ItemKind::Word(t.to_string()),
+                    None => ItemKind::Word(t.into()),
                 };
                 if let Some(frame) = stack.last_mut() {
                     frame.items.push(Item { location, kind });
@@ -250,6 +263,12 @@ pub fn parse(text: &str, file: &Path) -> Result<Document, SceneError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_item_of_the_syntax_tree_took_72_bytes() {
+        // A scene of numbers has an item per two bytes of text.
+        assert!(std::mem::size_of::<Item>() <= 32);
+    }
 
     fn doc(text: &str) -> Document {
         parse(text, Path::new("t.txt")).expect("parses")
@@ -302,8 +321,8 @@ mod tests {
     #[test]
     fn bracket_lists() {
         let d = doc("controls [ 0 1 0 ] [.5 .8 0]");
-        assert_eq!(d.items[1].kind, ItemKind::List(vec![0.0, 1.0, 0.0]));
-        assert_eq!(d.items[2].kind, ItemKind::List(vec![0.5, 0.8, 0.0]));
+        assert_eq!(d.items[1].kind, ItemKind::List(vec![0.0, 1.0, 0.0].into()));
+        assert_eq!(d.items[2].kind, ItemKind::List(vec![0.5, 0.8, 0.0].into()));
         assert_eq!(err_at("[ 1 x ]").0, 1);
         assert_eq!(err_at("a\n [ 1 2").1, 2);
     }

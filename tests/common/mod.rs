@@ -3,7 +3,10 @@
 
 #![allow(dead_code)]
 
+mod run;
 mod shapes;
+#[allow(unused_imports)]
+pub use run::*;
 #[allow(unused_imports)]
 pub use shapes::*;
 

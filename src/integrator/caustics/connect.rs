@@ -9,7 +9,7 @@ use crate::camera::{Camera, Projection};
 use crate::color::Color;
 use crate::integrator::{CameraSample, Splats};
 use crate::math::{Point3, Vec3, offset_origin};
-use crate::render_scene::RenderScene;
+use crate::render_scene::{RenderScene, ShadowTarget};
 use crate::shading::Shading;
 use crate::subpixel::{covering_pixels, filter_density};
 
@@ -29,7 +29,12 @@ pub fn connect(scene: &RenderScene, at: &Shading, f: Color, y: &CausticVertex) -
     let Some(edge) = edge_density(cosine_pdf, -y.geometric.dot(&w), distance_squared) else {
         return Color::BLACK;
     };
-    if !scene.unoccluded(at.spawn_origin(&w), w, distance, y.time) {
+    if !scene.unoccluded(
+        at.spawn_origin(&w),
+        w,
+        ShadowTarget::Surface(y.point),
+        y.time,
+    ) {
         return Color::BLACK;
     }
     let weight = connection_weight(edge, y.shading_ratio, y.emission_density);
@@ -124,7 +129,7 @@ pub fn splat_to_camera(
     let to_eye = -projection.direction;
     let origin = offset_origin(&y.point, &y.geometric, &to_eye);
     let free = projection.distance - projection.canvas;
-    if !scene.unoccluded(origin, to_eye, free, y.time) {
+    if !scene.unoccluded(origin, to_eye, ShadowTarget::Distance(free), y.time) {
         return;
     }
     // Radiance towards the eye: the BRDF of y times the subpath's weight;

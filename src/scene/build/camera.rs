@@ -33,6 +33,7 @@ pub fn build_camera(
     let mut center = Point3::zeros();
     let mut direction = Vec3::new(0.0, 0.0, -1.0);
     let mut up = Vec3::new(0.0, 1.0, 0.0);
+    let mut up_at = location;
     let mut look_from: Option<Point3> = None;
     let mut look_at: Option<Point3> = None;
     let mut width: Option<(f64, Location)> = None;
@@ -53,7 +54,10 @@ pub fn build_camera(
         match key {
             "center" => center = cursor.vec3(context, key)?,
             "direction" => direction = cursor.vec3(context, key)?,
-            "up" => up = cursor.vec3(context, key)?,
+            "up" => {
+                up_at = item.location;
+                up = cursor.vec3(context, key)?;
+            }
             "lookFrom" => look_from = Some(cursor.vec3(context, key)?),
             "lookAt" => look_at = Some(cursor.vec3(context, key)?),
             "width" | "height" => {
@@ -131,6 +135,20 @@ pub fn build_camera(
     }
     if direction.norm() < 1e-12 || !direction.iter().all(|v| v.is_finite()) {
         return Err(context.error(location, "the camera direction is zero".into()));
+    }
+    // The camera then takes any perpendicular as up (`Camera::new`).
+    let sideways = direction
+        .normalize()
+        .cross(&up.try_normalize(0.0).unwrap_or_default());
+    if sideways.norm().is_nan() || sideways.norm() < 1e-9 {
+        context.warn(
+            up_at,
+            format!(
+                "camera up ({}, {}, {}) is zero or along the view direction: the image's up is \
+                 an arbitrary perpendicular",
+                up.x, up.y, up.z
+            ),
+        )?;
     }
     let focus_distance = focus.unwrap_or(1.0);
     // osb's DepthCamera: `aperture` is the lens diameter, its radius drawn

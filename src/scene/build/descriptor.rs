@@ -52,11 +52,7 @@ pub fn read(context: &mut Context, named: &PathRef) -> Result<Descriptor, SceneE
     let file = match paths::resolve(&named.path, context.file, context.options) {
         Ok(file) => file,
         Err(tried) => {
-            let missing = format!(
-                "texture descriptor '{}' not found (tried {})",
-                named.path,
-                paths::describe_tried(&tried)
-            );
+            let missing = paths::missing("texture descriptor", &named.path, &tried);
             return missing_file(context, named.location, missing);
         }
     };
@@ -73,10 +69,11 @@ pub fn read(context: &mut Context, named: &PathRef) -> Result<Descriptor, SceneE
         options: context.options,
         dialect: context.dialect,
         warnings: Vec::new(),
+        tally: Default::default(),
         assets: Vec::new(),
     };
     let result = describe(&mut inner, &document.items, context.file);
-    context.warnings.append(&mut inner.warnings);
+    context.warnings.append(&mut inner.take_warnings());
     context.assets.push(file.clone());
     context.assets.append(&mut inner.assets);
     result
@@ -195,11 +192,7 @@ fn image(
     match paths::resolve(&named.path, scene, context.options) {
         Ok(file) => Ok(Descriptor::Image(file)),
         Err(tried) => {
-            let missing = format!(
-                "texture '{}' not found (tried {})",
-                named.path,
-                paths::describe_tried(&tried)
-            );
+            let missing = paths::missing("texture", &named.path, &tried);
             missing_file(context, named.location, missing)
         }
     }

@@ -312,7 +312,7 @@ fn read_type(
     location: Location,
 ) -> Result<(), SceneError> {
     if let Some(ItemKind::Word(word)) = cursor.peek().map(|i| &i.kind) {
-        f.kind = match word.as_str() {
+        f.kind = match &**word {
             "DIFF" => Some(Kind::Diffuse),
             "SPEC" => Some(Kind::Specular),
             "REFR" => Some(Kind::Refract),

@@ -92,6 +92,13 @@ impl Meshes {
             for warning in loaded.warnings {
                 context.warn(at, warning)?;
             }
+            if loaded.mesh.triangles.is_empty() {
+                let message = format!(
+                    "mesh '{}' has no triangles: nothing of it is rendered",
+                    shown_path(path)
+                );
+                context.warn(at, message)?;
+            }
             let file = MeshFile {
                 mesh: Arc::new(loaded.mesh),
                 materials: loaded.materials,

@@ -21,6 +21,7 @@ mod shapes;
 mod texture_file;
 mod textures;
 mod transform;
+mod warning_tally;
 mod weights;
 
 use std::path::Path;
@@ -33,6 +34,7 @@ use crate::scene::model::{Material, Object, Scene};
 
 pub use cursor::Cursor;
 pub use dialect::{detect_dialect, look_fingerprints};
+use warning_tally::WarningTally;
 
 /// State shared by every build step: where we are, what went wrong so far.
 pub struct Context<'a> {
@@ -40,6 +42,8 @@ pub struct Context<'a> {
     pub options: &'a LoadOptions,
     pub dialect: crate::scene::model::Dialect,
     pub warnings: Vec<Diagnostic>,
+    /// Counts warnings by kind: only the first few of each are kept.
+    pub tally: WarningTally,
     /// Files read besides the scene file (see [`LoadStats::assets`]).
     ///
     /// [`LoadStats::assets`]: crate::scene::model::LoadStats::assets
@@ -64,8 +68,19 @@ impl Context<'_> {
         if self.options.strict {
             return Err(self.error(location, message));
         }
-        self.warnings.push(self.diagnostic(location, message));
+        if self.tally.admit(&message, location) {
+            self.warnings.push(self.diagnostic(location, message));
+        }
         Ok(())
+    }
+
+    /// The warnings kept, and one for each kind of which more were counted.
+    pub fn take_warnings(&mut self) -> Vec<Diagnostic> {
+        let mut warnings = std::mem::take(&mut self.warnings);
+        for (location, message) in std::mem::take(&mut self.tally).summaries() {
+            warnings.push(self.diagnostic(location, message));
+        }
+        warnings
     }
 
     /// Warns that `field`, read at `location`, is not rendered, and why
@@ -113,7 +128,7 @@ impl Context<'_> {
                     shown(block)
                 ),
             ),
-            ItemKind::Word(w) if w == "-" => Ok(()),
+            ItemKind::Word(w) if &**w == "-" => Ok(()),
             _ => self.warn(
                 item.location,
                 format!(
@@ -134,6 +149,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         options,
         dialect,
         warnings: Vec::new(),
+        tally: WarningTally::default(),
         assets: Vec::new(),
     };
     let mut camera_block = None;
@@ -257,7 +273,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         medium: scene_medium,
         dialect,
         fingerprints: look_fingerprints(document),
-        warnings: context.warnings,
+        warnings: context.take_warnings(),
         load,
     })
 }

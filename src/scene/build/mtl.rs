@@ -69,29 +69,30 @@ fn color(c: [f32; 3]) -> Color {
 impl Reader<'_, '_> {
     fn material(&mut self, source: &tobj::Material) -> Result<MaterialImages, SceneError> {
         let mut material = Material::DEFAULT;
-        if let Some(kd) = source.diffuse {
+        if let Some(kd) = self.finite("Kd", source.diffuse)? {
             material.color = color(kd);
         }
-        if let Some(ke) = source.emissive {
+        if let Some(ke) = self.finite("Ke", source.emissive)? {
             material.emission = color(ke);
         }
-        if let Some(ks) = source.specular.map(color)
+        let shininess = self.finite("Ns", source.shininess.map(|n| [n]))?;
+        if let Some(ks) = self.finite("Ks", source.specular)?.map(color)
             && !ks.is_black()
         {
-            let exponent = source.shininess.map_or(1.0, f64::from);
+            let exponent = shininess.map_or(1.0, |[n]| f64::from(n));
             material.phong = Some(Phong {
                 color: ks,
                 exponent,
             });
         }
-        if let Some(d) = source.dissolve {
+        if let Some([d]) = self.finite("d", source.dissolve.map(|d| [d]))? {
             let d = (d as f64).clamp(0.0, 1.0);
             if d < 1.0 {
                 material.diffuse = d;
                 material.refract = 1.0 - d;
             }
         }
-        if let Some(ni) = source.optical_density
+        if let Some([ni]) = self.finite("Ni", source.optical_density.map(|n| [n]))?
             && ni > 0.0
         {
             material.ior = ni as f64;
@@ -171,23 +172,48 @@ impl Reader<'_, '_> {
             }
         }
         let folder = self.library.path.parent().unwrap_or(Path::new(""));
-        let Some(file) = find_image(folder, &spec.file) else {
-            let message = format!(
-                "mesh '{}': image '{}' of '{}' in material '{}' not found ({}), ignored",
-                shown_path(self.obj),
-                spec.file,
-                keys[0],
-                self.name,
-                self.place(keys)
-            );
-            self.context.warn(self.at, message)?;
-            return Ok(None);
+        let file = match find_image(folder, &spec.file) {
+            Ok(file) => file,
+            Err(reason) => {
+                let message = format!(
+                    "mesh '{}': image '{}' of '{}' in material '{}' {reason} ({}), ignored",
+                    shown_path(self.obj),
+                    shown_path(Path::new(&spec.file)),
+                    keys[0],
+                    self.name,
+                    self.place(keys)
+                );
+                self.context.warn(self.at, message)?;
+                return Ok(None);
+            }
         };
         let path = PathRef {
             path: file.to_string_lossy().into_owned(),
             location: self.at,
         };
         Ok(Some((path, scale)))
+    }
+
+    /// `value` of field `key` if every number of it is finite; else a
+    /// warning (the field keeps its default) and `None`.
+    fn finite<const N: usize>(
+        &mut self,
+        key: &str,
+        value: Option<[f32; N]>,
+    ) -> Result<Option<[f32; N]>, SceneError> {
+        match value {
+            Some(numbers) if numbers.iter().any(|n| !n.is_finite()) => {
+                let message = format!(
+                    "mesh '{}': '{key}' of material '{}' is not a finite number ({}): its default instead",
+                    shown_path(self.obj),
+                    self.name,
+                    self.place(&[key])
+                );
+                self.context.warn(self.at, message)?;
+                Ok(None)
+            }
+            other => Ok(other),
+        }
     }
 
     fn not_rendered(&mut self, key: &str, what: &str) -> Result<(), SceneError> {
@@ -271,15 +297,29 @@ fn parse_map(value: &str) -> MapSpec {
 
 /// The image `file` of a `.mtl` in `folder` (also with `\` read as `/`),
 /// as an absolute path.
-fn find_image(folder: &Path, file: &str) -> Option<PathBuf> {
+/// The image `file` of a map, relative to `folder` (backslashes read as
+/// slashes if need be); or why it is not one: not found, a directory, a
+/// pipe or device, a name too long.
+fn find_image(folder: &Path, file: &str) -> Result<PathBuf, &'static str> {
     if file.is_empty() {
-        return None;
+        return Err("not named");
     }
-    [file.to_string(), file.replace('\\', "/")]
-        .into_iter()
-        .map(|name| folder.join(name))
-        .find(|path| path.is_file())
-        .and_then(|path| std::path::absolute(path).ok())
+    let mut reason = "not found";
+    for name in [file.to_string(), file.replace('\\', "/")] {
+        let path = folder.join(name);
+        match std::fs::metadata(&path) {
+            Ok(metadata) if metadata.is_file() => {
+                return std::path::absolute(path).map_err(|_| "not found");
+            }
+            Ok(metadata) if metadata.is_dir() => reason = "is a directory, not an image",
+            Ok(_) => reason = "is not a regular file (a device, pipe or socket)",
+            Err(e) if e.kind() == std::io::ErrorKind::InvalidFilename => {
+                reason = "has a name too long for the file system"
+            }
+            Err(_) => {}
+        }
+    }
+    Err(reason)
 }
 
 #[cfg(test)]

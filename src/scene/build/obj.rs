@@ -57,10 +57,27 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     // it returns: record each library with its text and material count.
     let libraries = RefCell::new(Vec::<(MaterialLibrary, usize)>::new());
     let warnings = RefCell::new(Vec::new());
+    // Each library is read once however often `mtllib` names it (a repeat
+    // adds no material), and all of them together within MAX_MESH_BYTES.
+    let read_already = RefCell::new(Vec::<PathBuf>::new());
+    let bytes_read = RefCell::new(0u64);
     let load_library = |name: &Path| {
         let full = folder.join(name);
-        let text = match read_within(&full, MAX_MESH_BYTES, "limits::MAX_MESH_BYTES") {
-            Ok(bytes) => String::from_utf8_lossy(&bytes).into_owned(),
+        let identity = std::fs::canonicalize(&full).unwrap_or_else(|_| full.clone());
+        if read_already.borrow().contains(&identity) {
+            return Ok(Default::default());
+        }
+        read_already.borrow_mut().push(identity);
+        let room = MAX_MESH_BYTES.saturating_sub(*bytes_read.borrow());
+        let text = match read_within(
+            &full,
+            room,
+            "limits::MAX_MESH_BYTES, for all of a mesh's .mtl files",
+        ) {
+            Ok(bytes) => {
+                *bytes_read.borrow_mut() += bytes.len() as u64;
+                String::from_utf8_lossy(&bytes).into_owned()
+            }
             Err(e) => {
                 warnings.borrow_mut().push(format!(
                     "mesh '{}': materials not loaded ({e})",
@@ -225,6 +242,27 @@ mod tests {
         assert!(mesh.triangles.iter().flatten().all(|&i| i < 7));
         assert_eq!(warnings.len(), 1);
         assert!(load_obj(&dir.join("none.obj")).is_err());
+    }
+
+    #[test]
+    fn an_obj_repeating_mtllib_2000_times_read_the_mtl_2000_times() {
+        let dir = std::env::temp_dir().join(format!("pt-obj-repeat-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        std::fs::write(
+            dir.join("a.mtl"),
+            "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1\n",
+        )
+        .expect("write");
+        let mut text = "mtllib a.mtl\nmtllib ./a.mtl\n".repeat(1000);
+        text.push_str("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl blue\nf 1 2 3\n");
+        let file = dir.join("repeat.obj");
+        std::fs::write(&file, text).expect("write");
+        let loaded = load_obj(&file).expect("loads");
+        let materials = loaded.materials.expect("the face uses a material");
+        assert_eq!(materials.libraries.len(), 1);
+        assert_eq!(materials.materials.len(), 2);
+        assert_eq!(materials.faces, [1]);
+        assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
     }
 
     #[test]

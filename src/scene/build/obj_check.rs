@@ -53,6 +53,12 @@ pub fn check_obj_text(text: &str) -> Result<(), ObjProblem> {
             Some("f") => words.collect(),
             _ => continue,
         };
+        if numbers.len() < 3 {
+            return Err(problem(format!(
+                "a face needs at least 3 vertices, this line has {}",
+                numbers.len()
+            )));
+        }
         for vertex in numbers {
             check_face_vertex(vertex, &seen, &counts).map_err(problem)?;
         }

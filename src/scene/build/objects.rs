@@ -75,13 +75,13 @@ impl ObjectBuilder {
                         children.push(object);
                     }
                 }
-                ItemKind::Word(key) if key == "numObjects" => {
+                ItemKind::Word(key) if &**key == "numObjects" => {
                     expected = Some((cursor.integer(context, key)?, item.location));
                 }
-                ItemKind::Word(key) if key == "MaterialIndex" || key == "materialIndex" => {
+                ItemKind::Word(key) if &**key == "MaterialIndex" || &**key == "materialIndex" => {
                     self.select_material(context, &mut cursor, key)?;
                 }
-                ItemKind::Word(key) if key != "-" => {
+                ItemKind::Word(key) if &**key != "-" => {
                     context.skip_field(&mut cursor, key, item.location, &block.name)?
                 }
                 _ => context.skip_item(item, &block.name)?,
@@ -221,10 +221,7 @@ impl ObjectBuilder {
         let path = match paths::resolve(relative, context.file, context.options) {
             Ok(path) => path,
             Err(tried) => {
-                let missing = format!(
-                    "mesh '{relative}' not found (tried {})",
-                    paths::describe_tried(&tried)
-                );
+                let missing = paths::missing("mesh", relative, &tried);
                 if context.options.missing_assets == MissingAssets::Error {
                     return Err(context.error(at, missing));
                 }

@@ -47,6 +47,26 @@ pub fn resolve(
     }
 }
 
+/// The message for a `what` (`mesh`, `texture`, ...) named `relative`
+/// that no candidate holds: "not found", or that its name is too long for
+/// the file system (which every lookup then refuses), with the paths tried.
+pub fn missing(what: &str, relative: &str, tried: &[PathBuf]) -> String {
+    let too_long = tried.iter().any(|path| {
+        std::fs::symlink_metadata(path)
+            .is_err_and(|e| e.kind() == std::io::ErrorKind::InvalidFilename)
+    });
+    let reason = if too_long {
+        "has a name too long for the file system"
+    } else {
+        "not found"
+    };
+    format!(
+        "{what} '{}' {reason} (tried {})",
+        shown_path(Path::new(relative)),
+        describe_tried(tried)
+    )
+}
+
 /// "a, b or c" for messages.
 pub fn describe_tried(tried: &[PathBuf]) -> String {
     tried

@@ -29,7 +29,7 @@ pub fn read_profile(
     let mut locations = Vec::new();
     for item in &curve.items {
         match &item.kind {
-            ItemKind::List(point) => match point.as_slice() {
+            ItemKind::List(point) => match &point[..] {
                 [x, y, ..] if x.is_finite() && y.is_finite() => {
                     if controls.len() == MAX_CONTROL_POINTS {
                         return Err(context.error(
@@ -49,7 +49,7 @@ pub fn read_profile(
                     );
                 }
             },
-            ItemKind::Word(w) if w == "controls" || w == "num_controls" => {}
+            ItemKind::Word(w) if &**w == "controls" || &**w == "num_controls" => {}
             ItemKind::Number(_) => {}
             _ => context.skip_item(item, &curve.name)?,
         }

@@ -1,14 +1,14 @@
 //! Reading a texture image: a regular file within
 //! [`MAX_TEXTURE_BYTES`], whose header is checked against the memory budget
 //! before it is decoded (a small file may claim a huge image), decoded into
-//! linear [0, 1] texels (no gamma conversion).
+//! linear texels (no gamma conversion): 8-bit values in [0, 1], PFM values
+//! as stored.
 
-use std::io::Cursor;
 use std::path::Path;
 
-use image::{ImageReader, Limits};
+use image::Limits;
 
-use crate::image_io::{check_decodable, describe_error};
+use crate::image_io::{check_decodable, decode_image, describe_error, is_pfm, reader_for};
 use crate::limits::{MAX_TEXTURE_BYTES, MemoryBudget, read_within};
 use crate::texture::Texture;
 
@@ -17,12 +17,24 @@ use crate::texture::Texture;
 const DECODING_BYTES_PER_TEXEL: u64 = 40;
 
 /// Decodes the image `file` into a texture, within `budget`.
+/// PFM files (linear values, as this renderer writes them) are read too,
+/// and TGA by its extension.
 pub fn read_texture(file: &Path, budget: MemoryBudget) -> Result<Texture, String> {
     let bytes = read_within(file, MAX_TEXTURE_BYTES, "limits::MAX_TEXTURE_BYTES")?;
-    check_decodable(&bytes, budget, DECODING_BYTES_PER_TEXEL)?;
-    let mut reader = ImageReader::new(Cursor::new(&bytes))
-        .with_guessed_format()
-        .map_err(|e| e.to_string())?;
+    check_decodable(&bytes, file, budget, DECODING_BYTES_PER_TEXEL)?;
+    if is_pfm(&bytes) {
+        let (image, _) = decode_image(&bytes, file)?;
+        return Ok(Texture {
+            width: image.width,
+            height: image.height,
+            texels: image
+                .pixels
+                .iter()
+                .map(|c| [c.r as f32, c.g as f32, c.b as f32])
+                .collect(),
+        });
+    }
+    let mut reader = reader_for(&bytes, file)?;
     let mut limits = Limits::default();
     limits.max_alloc = Some(budget.bytes);
     reader.limits(limits);

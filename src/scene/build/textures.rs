@@ -220,11 +220,7 @@ impl Loader {
         let file = match paths::resolve(&path.path, context.file, context.options) {
             Ok(file) => file,
             Err(tried) => {
-                let missing = format!(
-                    "texture '{}' not found (tried {})",
-                    path.path,
-                    paths::describe_tried(&tried)
-                );
+                let missing = paths::missing("texture", &path.path, &tried);
                 if context.options.missing_assets == MissingAssets::Error {
                     return Err(context.error(path.location, missing));
                 }

@@ -21,7 +21,7 @@ pub fn build_transform(
     let mut cursor = Cursor::of(block);
     while let Some(item) = cursor.next() {
         match &item.kind {
-            ItemKind::Word(op) => match op.as_str() {
+            ItemKind::Word(op) => match &**op {
                 "Translate" => {
                     matrix *= Matrix::new_translation(&cursor.vec3(context, op)?);
                 }
@@ -30,7 +30,7 @@ pub fn build_transform(
                 }
                 "UniformScale" => matrix *= Matrix::new_scaling(cursor.number(context, op)?),
                 "XRotate" | "YRotate" | "ZRotate" => {
-                    let axis = match op.as_str() {
+                    let axis = match &**op {
                         "XRotate" => Vec3::x(),
                         "YRotate" => Vec3::y(),
                         _ => Vec3::z(),
@@ -94,13 +94,35 @@ pub fn wrap(
         .try_inverse()
         .filter(|inverse| inverse.iter().chain(matrix.iter()).all(|v| v.is_finite()));
     let Some(inverse) = inverse else {
-        return Err(context.error(location, "the transform matrix is singular".into()));
+        return Err(context.error(location, not_invertible(&matrix)));
     };
     Ok(Object::Transform {
         matrix,
         inverse,
         child: Box::new(child),
     })
+}
+
+/// Why `matrix` has no usable inverse: entries or a determinant beyond
+/// floating point (`Scale 1e300`), or a zero determinant (a zero scale).
+fn not_invertible(matrix: &Matrix) -> String {
+    let largest = matrix.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if !largest.is_finite() {
+        return "the transform matrix is not finite (a scale, translation or matrix entry \
+                overflows)"
+            .to_string();
+    }
+    let determinant = matrix.determinant();
+    if !determinant.is_finite() || determinant.abs() > 1e300 {
+        return format!(
+            "the transform scales by too much to be inverted in floating point (an entry of \
+             {largest:e})"
+        );
+    }
+    if determinant == 0.0 {
+        return "the transform matrix is singular (it flattens space: a zero scale?)".to_string();
+    }
+    format!("the transform cannot be inverted in floating point (determinant {determinant:e})")
 }
 
 #[cfg(test)]
