@@ -15,7 +15,7 @@ render: build
 	$(BIN) render $(SCENE) --spp $(SPP)
 
 test:
-	$(CARGO) test --profile test-release
+	$(CARGO) test --release
 
 lint:
 	$(CARGO) fmt --check

@@ -23,8 +23,7 @@
 # ${TMPDIR:-/tmp}/pathtracer-compare), so a second run against the same base
 # builds only the new commit; a new target dir starts from a copy of this
 # checkout's target/$PROFILE when there is one (dependencies then need not
-# rebuild). PROFILE (default release, the shipped build; test-release links
-# faster) chooses the cargo profile. The scenes are this checkout's files
+# rebuild). PROFILE (default release, the shipped build) chooses the cargo profile. The scenes are this checkout's files
 # (both builds render the same ones); the images go to
 # $COMPARE_DIR/images/base-<commit>/ and new-<commit>/.
 set -euo pipefail
