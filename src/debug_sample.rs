@@ -35,7 +35,10 @@ pub fn trace_sample(
     row: usize,
     sample: u32,
 ) -> Result<SampleTrace, String> {
-    let (width, height) = (settings.width.max(1) as usize, settings.height.max(1) as usize);
+    let (width, height) = (
+        settings.width.max(1) as usize,
+        settings.height.max(1) as usize,
+    );
     if x >= width || row >= height {
         return Err(format!(
             "--debug-sample: pixel ({x}, {row}) is outside the {width}x{height} image"
@@ -78,7 +81,11 @@ impl fmt::Display for SampleTrace {
             writeln!(f, "{event}")?;
         }
         for (x, row, value) in &self.splats {
-            writeln!(f, "light subpath adds to pixel ({x}, {row}): {}", color(value))?;
+            writeln!(
+                f,
+                "light subpath adds to pixel ({x}, {row}): {}",
+                color(value)
+            )?;
         }
         write!(f, "sample value: {}", color(&self.value))
     }

@@ -42,7 +42,9 @@ fn settings(look: Look, integrator: Integrator) -> RenderSettings {
 }
 
 fn scene_of(file: &str, settings: &RenderSettings) -> RenderScene {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("testcases").join(file);
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("testcases")
+        .join(file);
     let options = LoadOptions {
         base: Some(Path::new(env!("CARGO_MANIFEST_DIR")).to_path_buf()),
         ..LoadOptions::default()
@@ -94,14 +96,20 @@ fn check_every_pixel(file: &str, integrator: Integrator, sample: u32) -> usize {
 fn a_traced_sample_is_what_the_render_adds_with_the_path_integrator() {
     for file in ["smallpt.txt", "showcase.txt", "tutorial4_cornell.txt"] {
         let vertices = check_every_pixel(file, Integrator::Path, 3);
-        assert!(vertices > (WIDTH * HEIGHT) as usize, "{file}: {vertices} hits logged");
+        assert!(
+            vertices > (WIDTH * HEIGHT) as usize,
+            "{file}: {vertices} hits logged"
+        );
     }
 }
 
 #[test]
 fn a_traced_sample_is_what_the_render_adds_with_the_original_estimator() {
     let vertices = check_every_pixel("smallpt.txt", Integrator::Original, 1);
-    assert!(vertices > (WIDTH * HEIGHT) as usize, "{vertices} hits logged");
+    assert!(
+        vertices > (WIDTH * HEIGHT) as usize,
+        "{vertices} hits logged"
+    );
 }
 
 #[test]
@@ -131,10 +139,18 @@ fn the_printed_terms_add_up_to_the_pixel_of_a_one_sample_render() {
     let dir = common::fresh_dir("debug-sample");
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("testcases/showcase.txt");
     let scene = scene.to_str().expect("a UTF-8 path");
-    let base = ["render", scene, "--width", "12", "--height", "9", "--seed", "5"];
+    let base = [
+        "render", scene, "--width", "12", "--height", "9", "--seed", "5",
+    ];
     let image = dir.join("one.pfm");
     let mut render: Vec<&str> = base.to_vec();
-    render.extend(["--spp", "1", "--quiet", "-o", image.to_str().expect("UTF-8")]);
+    render.extend([
+        "--spp",
+        "1",
+        "--quiet",
+        "-o",
+        image.to_str().expect("UTF-8"),
+    ]);
     let ran = common::finish(common::command_in(&dir, &render));
     assert_eq!(ran.code, Some(0), "{}", ran.stderr);
     let image = read_image(&image).expect("the PFM reads");
@@ -157,7 +173,12 @@ fn the_printed_terms_add_up_to_the_pixel_of_a_one_sample_render() {
         }
         let value = value.expect("a sample value line");
         assert!(terms > 0, "{}", ran.stdout);
-        assert_eq!([sum.r, sum.g, sum.b], [value.r, value.g, value.b], "{}", ran.stdout);
+        assert_eq!(
+            [sum.r, sum.g, sum.b],
+            [value.r, value.g, value.b],
+            "{}",
+            ran.stdout
+        );
         let pixel = image.pixels[row * 12 + x];
         let difference = largest_difference(pixel, value);
         // The image is f32.
@@ -174,9 +195,22 @@ fn a_pixel_outside_the_image_is_refused() {
     let dir = common::fresh_dir("debug-sample-outside");
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("testcases/smallpt.txt");
     let scene = scene.to_str().expect("a UTF-8 path");
-    let args = ["render", scene, "--width", "8", "--height", "6", "--debug-sample", "8,0,0"];
+    let args = [
+        "render",
+        scene,
+        "--width",
+        "8",
+        "--height",
+        "6",
+        "--debug-sample",
+        "8,0,0",
+    ];
     let ran = common::finish(common::command_in(&dir, &args));
-    assert!(ran.refused().contains("outside the 8x6 image"), "{}", ran.stderr);
+    assert!(
+        ran.refused().contains("outside the 8x6 image"),
+        "{}",
+        ran.stderr
+    );
     let args = ["render", scene, "--debug-sample", "1,2"];
     let ran = common::finish(common::command_in(&dir, &args));
     assert_eq!(ran.code, Some(2), "{}", ran.stderr);

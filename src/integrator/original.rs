@@ -46,25 +46,34 @@ pub fn radiance(
             point: at.point,
             normal: at.normal,
             material: hit.material,
-            lobes: at.material.lobes.clone(),
+            lobes: Box::new(at.material.lobes.clone()),
         });
         let emission = throughput * at.material.emission;
         add(&mut result, log, depth + 1, Term::Emission, emission);
         depth += 1;
         if depth > scene.max_depth() {
-            log.record(|| PathEvent::Ended { depth, why: "the deepest hit" });
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "the deepest hit",
+            });
             break;
         }
         let wo = -ray.direction;
         let bsdf = bsdf_at(scene, &at, &wo, GlassChoice::Smallpt);
         if bsdf.is_black() {
-            log.record(|| PathEvent::Ended { depth, why: "a black BSDF" });
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "a black BSDF",
+            });
             break;
         }
         let lights = throughput * pa1_lights(scene, &at, &bsdf, &wo, &PathSpectrum::Rgb);
         add(&mut result, log, depth, Term::DirectLights, lights);
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
-            log.record(|| PathEvent::Ended { depth, why: "the BSDF gave no direction" });
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "the BSDF gave no direction",
+            });
             break;
         };
         throughput *= scattered.weight;
@@ -77,7 +86,10 @@ pub fn radiance(
             throughput,
         });
         if throughput.is_black() {
-            log.record(|| PathEvent::Ended { depth, why: "a black throughput" });
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "a black throughput",
+            });
             break;
         }
         let direction = scattered.wi;

@@ -139,7 +139,14 @@ pub fn radiance(
             } else {
                 miss_split(scene, depth, throughput, &spectrum)
             };
-            add(&mut result, log, depth + 1, Term::Background, None, background);
+            add(
+                &mut result,
+                log,
+                depth + 1,
+                Term::Background,
+                None,
+                background,
+            );
             log.record(|| PathEvent::Ended {
                 depth: depth + 1,
                 why: "the ray found nothing",
@@ -153,7 +160,7 @@ pub fn radiance(
             point: at.point,
             normal: at.normal,
             material: hit.material,
-            lobes: material.lobes.clone(),
+            lobes: Box::new(material.lobes.clone()),
         });
         if !material.emission.is_black() {
             let weight = match (origin, track) {
@@ -175,11 +182,21 @@ pub fn radiance(
                 }
             };
             let emission = throughput * spectrum.factor(material.emission) * weight;
-            add(&mut result, log, depth + 1, Term::Emission, Some(weight), emission);
+            add(
+                &mut result,
+                log,
+                depth + 1,
+                Term::Emission,
+                Some(weight),
+                emission,
+            );
         }
         depth += 1;
         if depth > scene.max_depth() {
-            log.record(|| PathEvent::Ended { depth, why: "the deepest hit" });
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "the deepest hit",
+            });
             break;
         }
         let wo = -ray.direction;
@@ -187,7 +204,10 @@ pub fn radiance(
         let dispersed;
         let mut bsdf = bsdf_at(scene, &at, &wo, GlassChoice::Fresnel);
         if bsdf.is_black() {
-            log.record(|| PathEvent::Ended { depth, why: "a black BSDF" });
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "a black BSDF",
+            });
             break;
         }
         if bsdf.dispersion().is_some() {
@@ -208,11 +228,17 @@ pub fn radiance(
                     scene, &at, &bsdf, &wo, 1.0, ray.time, sampler, &spectrum, false,
                 );
             add(&mut result, log, depth, Term::LastLightSample, None, last);
-            log.record(|| PathEvent::Ended { depth, why: "the last vertex's light sample" });
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "the last vertex's light sample",
+            });
             break;
         }
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
-            log.record(|| PathEvent::Ended { depth, why: "the BSDF gave no direction" });
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "the BSDF gave no direction",
+            });
             break;
         };
         // Where the ray that found this vertex came from (for the caustic track).
@@ -274,7 +300,10 @@ pub fn radiance(
             throughput,
         });
         if spectrum.is_dark(&throughput) {
-            log.record(|| PathEvent::Ended { depth, why: "a dark throughput" });
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "a dark throughput",
+            });
             break;
         }
         if depth >= ROULETTE_DEPTH {
@@ -283,10 +312,16 @@ pub fn radiance(
             let survival = spectrum.roulette_level(&throughput).sqrt().min(1.0);
             if survival < 1.0 {
                 if sampler.next_f64() >= survival {
-                    log.record(|| PathEvent::Ended { depth, why: "Russian roulette" });
+                    log.record(|| PathEvent::Ended {
+                        depth,
+                        why: "Russian roulette",
+                    });
                     break;
                 }
-                log.record(|| PathEvent::Survived { depth, probability: survival });
+                log.record(|| PathEvent::Survived {
+                    depth,
+                    probability: survival,
+                });
                 throughput = throughput / survival;
             }
         }
@@ -307,7 +342,12 @@ fn add(
     value: Color,
 ) {
     *result += value;
-    log.record(|| PathEvent::Added { depth, term, mis_weight, value });
+    log.record(|| PathEvent::Added {
+        depth,
+        term,
+        mis_weight,
+        value,
+    });
 }
 
 /// The caustic track of a diffuse vertex `at` (as `y`) reached by `ray` from

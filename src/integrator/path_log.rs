@@ -87,7 +87,7 @@ pub enum PathEvent {
         normal: Vec3,
         material: usize,
         /// The material's lobes and their weights.
-        lobes: LobeSet,
+        lobes: Box<LobeSet>,
     },
     /// The path added `value` (throughput included) to the sample.
     Added {
@@ -166,7 +166,10 @@ impl fmt::Display for PathEvent {
                 color(throughput)
             ),
             PathEvent::Survived { depth, probability } => {
-                write!(f, "  roulette at {depth}: survived, probability {probability:.6}")
+                write!(
+                    f,
+                    "  roulette at {depth}: survived, probability {probability:.6}"
+                )
             }
             PathEvent::Ended { depth, why } => write!(f, "ended at {depth}: {why}"),
         }
