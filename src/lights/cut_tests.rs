@@ -4,7 +4,7 @@
 
 use std::f64::consts::PI;
 
-use super::emitter::uniform_sphere;
+use crate::geometry::surface_samples::uniform_sphere;
 use super::tests::built;
 use super::*;
 use crate::color::Color;
