@@ -98,12 +98,10 @@ impl Shape {
             Shape::Triangle(triangle) => Some(Shape::Triangle(Triangle::new(
                 triangle.vertices.map(|p| point(&p)),
             ))),
-            Shape::Rectangle(r) => Rectangle::new(
-                point(&r.origin),
-                vector(&r.edge_u),
-                vector(&r.edge_v),
-            )
-            .map(Shape::Rectangle),
+            Shape::Rectangle(r) => {
+                Rectangle::new(point(&r.origin), vector(&r.edge_u), vector(&r.edge_v))
+                    .map(Shape::Rectangle)
+            }
             _ => None,
         }
     }

@@ -14,9 +14,9 @@ use std::f64::consts::PI;
 
 use super::cut::Cap;
 use super::{Distribution, Emitter, Emitters, LightPathStarts};
+use crate::color::Color;
 use crate::geometry::Sphere;
 use crate::geometry::surface_samples::uniform_sphere;
-use crate::color::Color;
 use crate::math::{Point3, Vec3};
 use crate::world::WorldHit;
 

@@ -9,7 +9,7 @@
 use super::cut::{Cap, CutPlane, Cuts};
 use crate::color::Color;
 use crate::geometry::surface_samples::{area_to_solid_angle, from_area_sample};
-use crate::geometry::{ShapeSample, Shape, Sphere, Transform};
+use crate::geometry::{Shape, ShapeSample, Sphere, Transform};
 use crate::math::{Point3, Vec3, transform_point};
 
 #[derive(Clone, Debug)]
@@ -42,7 +42,9 @@ impl Emitter {
             None => (shape.clone(), None),
             Some(t) => match shape.to_world(t) {
                 Some(world) => (world, None),
-                None if matches!(shape, Shape::Disk(_)) => (shape.clone(), Some(Box::new(t.clone()))),
+                None if matches!(shape, Shape::Disk(_)) => {
+                    (shape.clone(), Some(Box::new(t.clone())))
+                }
                 None => return None,
             },
         };
@@ -96,7 +98,10 @@ impl Emitter {
         if self.cuts.is_empty() {
             return None;
         }
-        Some((sphere, self.cuts.cap(&sphere.center, sphere.radius, reference)?))
+        Some((
+            sphere,
+            self.cuts.cap(&sphere.center, sphere.radius, reference)?,
+        ))
     }
 
     /// The area that shadow rays from `reference` can reach, past `planes`
@@ -199,10 +204,7 @@ impl Emitter {
         let (point, normal) = self.shape.flat_frame()?;
         match &self.transform {
             None => Some((point, normal)),
-            Some(t) => Some((
-                transform_point(&t.matrix, &point),
-                t.normal_matrix * normal,
-            )),
+            Some(t) => Some((transform_point(&t.matrix, &point), t.normal_matrix * normal)),
         }
     }
 }

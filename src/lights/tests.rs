@@ -6,12 +6,12 @@ use std::sync::Arc;
 
 use super::*;
 use crate::color::Color;
+use crate::geometry::Transform;
 use crate::geometry::surface_samples::uniform_sphere;
 use crate::geometry::{Disk, Rectangle, Shape, Sphere, Triangle};
-use crate::geometry::Transform;
-use crate::math::{Vec3, orthonormal_basis};
 use crate::look::Look;
 use crate::math::Ray;
+use crate::math::Vec3;
 use crate::render_scene::{RenderScene, SceneSettings};
 use crate::rng::Rng;
 use crate::scene::model::{Object, Scene};
@@ -29,7 +29,12 @@ fn sampled_solid_angle(shape: &Shape, reference: &Point3, n: usize) -> f64 {
         assert!((reference + s.direction * s.distance - s.point).norm() < 1e-9);
         let normal = match shape {
             Shape::Sphere(sphere) => (s.point - sphere.center).normalize(),
-            _ => shape.sample_area(0.0, [0.5, 0.5]).expect("a sampled shape").1,
+            _ => {
+                shape
+                    .sample_area(0.0, [0.5, 0.5])
+                    .expect("a sampled shape")
+                    .1
+            }
         };
         let pdf = shape.pdf(reference, 0.0, &s.point, &normal);
         assert!((pdf - s.pdf).abs() <= 1e-9 * s.pdf, "{pdf} vs {}", s.pdf);
@@ -65,7 +70,6 @@ fn densities_are_consistent_and_cover_the_visible_solid_angle() {
         Vec3::new(0.3, 0.2, -1.0),
     );
     let normal = Vec3::new(0.3, 0.2, 1.0).normalize();
-    let (e1, e2) = orthonormal_basis(&normal);
     let center = Point3::new(0.0, 0.0, -1.0);
     let cases = [
         Shape::Triangle(Triangle::new([a, b, c])),
@@ -122,7 +126,10 @@ fn a_transformed_disk_samples_through_its_transform() {
         })
         .count();
     let hit = 4.0 * PI * hits as f64 / m as f64;
-    assert!((sampled - hit).abs() < 0.03 * hit, "sampled {sampled} vs hit {hit}");
+    assert!(
+        (sampled - hit).abs() < 0.03 * hit,
+        "sampled {sampled} vs hit {hit}"
+    );
 }
 
 #[test]
