@@ -36,6 +36,7 @@ pub mod math;
 pub mod medium;
 pub mod metrics;
 pub mod pairs;
+pub mod photon_render;
 pub mod plot;
 pub mod progress;
 pub mod render;

@@ -8,6 +8,7 @@ pub mod path;
 pub mod raycast;
 pub mod scatter;
 pub mod split;
+pub mod sppm;
 pub mod volpath;
 
 use crate::color::Color;
@@ -33,6 +34,10 @@ impl Integrator {
             Integrator::Path if scene.media() => volpath::radiance(scene, ray, sampler),
             Integrator::Path => path::radiance(scene, ray, sample, sampler, splats),
             Integrator::RayCast => raycast::radiance(scene, ray),
+            // Photon mapping renders whole passes (`sppm::render`), not
+            // camera samples: `Renderer::new` refuses it. A camera sample
+            // gets the path integrator's estimate, the image SPPM converges to.
+            Integrator::Sppm => path::radiance(scene, ray, sample, sampler, splats),
         }
     }
 }
