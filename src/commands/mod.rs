@@ -12,6 +12,7 @@ macro_rules! say {
 pub mod check;
 pub mod compare;
 pub mod converge;
+pub mod debug_sample;
 pub mod job;
 pub mod lookalike;
 pub mod merge;
