@@ -39,6 +39,8 @@ enum Command {
     Converge(commands::converge::ConvergeArgs),
     /// Draw error-against-time CSV files as one log-log SVG plot.
     Plot(commands::converge::PlotArgs),
+    /// Render a scene progressively and watch it converge in a browser (127.0.0.1 only).
+    View(commands::view::ViewArgs),
 }
 
 fn main() -> ExitCode {
@@ -55,6 +57,7 @@ fn main() -> ExitCode {
         Command::Convert(args) => commands::compare::convert(&args),
         Command::Converge(args) => commands::converge::run(&args),
         Command::Plot(args) => commands::converge::plot(&args),
+        Command::View(args) => commands::view::run(&args),
     };
     let failed = match result {
         Ok(()) => false,

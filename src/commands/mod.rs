@@ -12,11 +12,13 @@ macro_rules! say {
 pub mod check;
 pub mod compare;
 pub mod converge;
+pub mod debug_sample;
 pub mod job;
 pub mod lookalike;
 pub mod merge;
 pub mod render;
 pub mod sidecar;
+pub mod view;
 
 use std::path::{Path, PathBuf};
 
