@@ -116,6 +116,53 @@ impl Emitters {
         u_side: f64,
     ) -> Option<EmissionPoint> {
         let (distribution, share) = self.light_path_distribution()?;
+        self.emission_point_of(
+            distribution,
+            share,
+            viewpoint,
+            time,
+            select,
+            u_point,
+            u_side,
+        )
+    }
+
+    /// [`Emitters::sample_emission_point`] over every emitter by power,
+    /// whatever light subpaths are restricted to: where the photons of
+    /// photon mapping leave from. The luminance of `pi emission / density`
+    /// (a photon's power) is [`Emitters::photon_power_unit`], twice that
+    /// for two-sided emitters.
+    pub fn sample_photon_origin(
+        &self,
+        viewpoint: &Point3,
+        time: f64,
+        select: f64,
+        u_point: [f64; 2],
+        u_side: f64,
+    ) -> Option<EmissionPoint> {
+        let distribution = self.distribution.as_ref()?;
+        self.emission_point_of(distribution, 1.0, viewpoint, time, select, u_point, u_side)
+    }
+
+    /// `pi` times the sum of the emitters' weights (emission luminance x
+    /// reachable area): the luminance of one photon's power from a
+    /// one-sided emitter, a scale for sums of photon powers (0 without
+    /// emitters).
+    pub fn photon_power_unit(&self) -> f64 {
+        PI * self.total_weight
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn emission_point_of(
+        &self,
+        distribution: &Distribution,
+        share: f64,
+        viewpoint: &Point3,
+        time: f64,
+        select: f64,
+        u_point: [f64; 2],
+        u_side: f64,
+    ) -> Option<EmissionPoint> {
         let (index, probability) = distribution.sample(select);
         let probability = probability * share;
         let emitter = &self.entries[index];

@@ -66,6 +66,10 @@ pub struct Emitters {
     /// [`Emitters::restrict_light_paths`]): the distribution over those, by
     /// power, and their share of the power. `None`: on every emitter.
     light_path_starts: Option<LightPathStarts>,
+    /// The sum of the entries' weights (emission luminance x reachable
+    /// area): with `pi`, the luminance of the power a photon carries (see
+    /// [`Emitters::sample_photon_origin`]).
+    total_weight: f64,
 }
 
 #[derive(Clone, Debug)]
@@ -112,11 +116,13 @@ impl Emitters {
             .map(|e| e.emission.luminance().max(0.0) * e.reachable_area(&camera, &planes))
             .collect();
         let distribution = Distribution::new(&weights);
+        let total_weight = weights.iter().filter(|w| w.is_finite() && **w > 0.0).sum();
         Emitters {
             entries,
             distribution,
             first_entry,
             light_path_starts: None,
+            total_weight,
         }
     }
 
