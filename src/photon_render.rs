@@ -50,6 +50,7 @@ impl<'a> PhotonMapper<'a> {
         settings: &'a RenderSettings,
         photon_settings: PhotonSettings,
     ) -> Result<PhotonMapper<'a>, String> {
+        let photon_settings = photon_settings.with_look(scene.look());
         photon_settings.check()?;
         if *scene.settings() != settings.scene() {
             return Err("the render-time scene was built for other settings".to_string());

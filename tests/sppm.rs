@@ -14,6 +14,7 @@ use pathtracer::color::Color;
 use pathtracer::image_io::Image;
 use pathtracer::integrator::Integrator;
 use pathtracer::integrator::sppm::{PhotonSettings, photon};
+use pathtracer::look::Look;
 use pathtracer::math::{Point3, Vec3};
 use pathtracer::photon_render;
 use pathtracer::render::{RenderSettings, render};
@@ -316,4 +317,43 @@ fn the_photons_of_a_pass_carry_the_emitters_power() {
     for (got, want) in [(mean.r, power.r), (mean.g, power.g), (mean.b, power.b)] {
         assert!((got - want).abs() < 0.01 * want, "{got} vs {want}");
     }
+}
+
+#[test]
+fn tschals_look_clamps_an_emitter_seen_directly_to_one_per_sample() {
+    // The camera sees only a black sphere light of emission 12.
+    let scene = Scene::new(
+        vec![light(12.0)],
+        Object::Group(vec![sphere(Point3::new(0.0, 0.0, -5.0), 3.0, 0)]),
+    );
+    for (look, want) in [(Look::TSC, 1.0), (Look::ORIGINAL, 12.0)] {
+        let mut settings = settings(Integrator::Sppm, 4, 2, 0);
+        settings.look = look;
+        let image = photon_mapped(&scene, &settings, 1_000, 0.1);
+        for pixel in &image.pixels {
+            assert!(
+                (pixel.average() - want).abs() < 1e-9,
+                "{}: {pixel:?}",
+                look.name
+            );
+        }
+    }
+}
+
+#[test]
+fn the_photon_mapping_looks_are_named_and_tschals_files_detected() {
+    for name in ["tsc", "jms", "alz-sppm", "yzc-sppm"] {
+        let look = Look::from_name(name).expect("a look of that name");
+        assert_eq!(look.integrator, Integrator::Sppm, "{name}");
+        assert!(look.photons.is_some(), "{name}");
+    }
+    let text =
+        "PerspectiveCamera { center 0 0 5 direction 0 0 -1 up 0 1 0 angle 30 width 4 height 4 }
+Materials { numMaterials 1 Material { color 0.5 0.5 0.5 prop Matte } }
+Group { numObjects 1 MaterialIndex 0 Sphere { center 0 0 0 radius 1 } }";
+    let dir = common::fresh_dir("sppm_tsc_detection");
+    let path = dir.join("prop.txt");
+    std::fs::write(&path, text).expect("writes");
+    let scene = pathtracer::scene::load_scene(&path, &Default::default()).expect("builds");
+    assert_eq!(Look::detect(&scene).0.name, "tsc");
 }

@@ -167,7 +167,8 @@ pub struct SamplingOptions {
     #[arg(long)]
     pub no_light_paths: bool,
     /// The conventions of the rendering: one coursework renderer's
-    /// (`pa1`, `cambrian`, `wso`, `osb`, `ylc`, `yzc`), the ported renderer's
+    /// (`pa1`, `cambrian`, `wso`, `osb`, `ylc`, `yzc`; by photon mapping
+    /// `tsc`, `jms`, `alz-sppm`, `yzc-sppm`), the ported renderer's
     /// (`original`) or this project's physically based one (`physical`).
     /// Default: the look of the renderer that wrote the scene, by its
     /// dialect and fingerprints.

@@ -30,6 +30,8 @@ pub struct EmissionPoint {
     /// Area density of the point, with the emitter's pick probability and
     /// the probability of the side (1/2 for two-sided emitters).
     pub density: f64,
+    /// The probability of having picked its emitter (table entry).
+    pub probability: f64,
 }
 
 /// Emitters that subtend more than this solid angle (steradians) from the
@@ -174,6 +176,7 @@ impl Emitters {
             normal,
             emission: emitter.emission,
             density,
+            probability,
         })
     }
 

@@ -29,8 +29,10 @@ use crate::world::ShapeRules;
 pub mod detect;
 mod integrator;
 mod mist;
+mod photons;
 pub use integrator::Integrator;
 pub use mist::{Mist, cambrian_mean_cosine};
+pub use photons::{PhotonLook, SeenEmission};
 
 /// How a look renders dispersive glass.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -148,6 +150,9 @@ pub struct Look {
     pub dispersion_sensor: DispersionSensor,
     /// How spheres meet rays (Cambrian's test for its glass balls).
     pub sphere_test: SphereTest,
+    /// A photon-mapping renderer's conventions (`photons`); `None`: this
+    /// project's photon mapping, when `--integrator sppm` asks for it.
+    pub photons: Option<PhotonLook>,
 }
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -175,6 +180,7 @@ impl Look {
         lens_shape: None,
         dispersion_sensor: DispersionSensor::Spectral,
         sphere_test: SphereTest::Robust,
+        photons: None,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -267,7 +273,7 @@ impl Look {
     };
 
     /// Every look, by name.
-    pub const ALL: [Look; 9] = [
+    pub const ALL: [Look; 13] = [
         Look::ORIGINAL,
         Look::PHYSICAL,
         Look::PA1,
@@ -277,6 +283,10 @@ impl Look {
         Look::YLC,
         Look::YZC,
         Look::CYY,
+        Look::TSC,
+        Look::JMS,
+        Look::ALZ_SPPM,
+        Look::YZC_SPPM,
     ];
 
     /// The scene's camera as this look reads it.

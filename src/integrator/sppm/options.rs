@@ -3,6 +3,8 @@
 //! rule from the size of what the camera sees) and alpha, the share of new
 //! photons each pass keeps (Hachisuka and Jensen 2009).
 
+use crate::look::Look;
+
 /// Alpha of Hachisuka and Jensen's paper (and of the coursework renderers):
 /// each pass keeps this share of its photons, and the radius shrinks with it.
 pub const DEFAULT_ALPHA: f64 = 0.7;
@@ -43,6 +45,19 @@ impl PhotonSettings {
         self.photons_per_pass
             .unwrap_or(pixels)
             .clamp(1, MAX_PHOTONS_PER_PASS)
+    }
+
+    /// These settings with what they leave open taken from `look`'s
+    /// photon-mapping conventions, if it has any.
+    pub fn with_look(&self, look: &Look) -> PhotonSettings {
+        match look.photons {
+            None => *self,
+            Some(photons) => PhotonSettings {
+                photons_per_pass: self.photons_per_pass.or(Some(photons.photons_per_pass)),
+                initial_radius: self.initial_radius.or(Some(photons.initial_radius)),
+                alpha: self.alpha,
+            },
+        }
     }
 
     /// The settings' errors, as a user reads them.

@@ -33,12 +33,13 @@ pub struct PhotonHit {
     pub wi: Vec3,
     /// Its power in units of [`Emitters::photon_power_unit`](crate::lights::Emitters::photon_power_unit).
     pub power: Color,
-    /// Scattering vertices before this surface (at least 1).
+    /// Scattering vertices before this surface.
     pub bounces: u32,
 }
 
 /// Traces one photon drawn from `sampler` at shutter time `time`, calling
-/// `gather` at every surface it reaches after its first bounce, while a
+/// `gather` at every surface it reaches after its first bounce (from the
+/// first in a photon-mapping look), while a
 /// visible point there could still be on a path of at most `max_depth`
 /// scattering vertices.
 pub fn trace(
@@ -53,6 +54,9 @@ pub fn trace(
     // A visible point is itself a scattering vertex: a photon after
     // `max_depth - 1` bounces can reach none.
     let last_bounce = scene.max_depth().saturating_sub(1);
+    // Direct light is the camera side's light sample, except in a
+    // photon-mapping look, whose photons bring it.
+    let first_gather = if scene.look().photons.is_some() { 0 } else { 1 };
     let mut bounces = 0;
     loop {
         let Some(hit) = scene.intersect(&ray) else {
@@ -64,7 +68,7 @@ pub fn trace(
         if bsdf.is_black() {
             return;
         }
-        if bounces > 0 && bsdf.smooth_probability() > 0.0 {
+        if bounces >= first_gather && bsdf.smooth_probability() > 0.0 {
             gather(&PhotonHit {
                 point: at.point,
                 wi: wo,
@@ -108,15 +112,26 @@ pub fn emit(scene: &RenderScene, sampler: &mut Sampler, time: f64) -> Option<(Ra
     if !(unit > 0.0 && unit.is_finite()) {
         return None;
     }
+    let look = scene.look().photons;
     let select = emitter_choice(scene, sampler);
     let u_point = sampler.next_2d();
     let u_side = sampler.next_f64();
     let u_direction = sampler.next_2d();
+    // A photon-mapping look's emitters send light from their normal side.
+    let u_side = if look.is_some() { 0.0 } else { u_side };
     let start =
         emitters.sample_photon_origin(&scene.camera_center(), time, select, u_point, u_side)?;
     let direction = cosine_hemisphere(&start.normal, u_direction);
-    // L_e cos / (p_area cos / pi), in units of the unit.
-    let power = start.emission * (PI / (start.density * unit));
+    let power = match look {
+        // L_e cos / (p_area cos / pi), in units of the unit.
+        None => start.emission * (PI / (start.density * unit)),
+        // The look's fixed power, each emitter with an equal share (see
+        // `look::photons`).
+        Some(look) => {
+            let share = emitters.len() as f64 * start.probability;
+            start.emission * (look.power * PI / (share * unit))
+        }
+    };
     let ray = Ray::new(
         offset_origin(&start.point, &start.normal, &direction),
         direction,

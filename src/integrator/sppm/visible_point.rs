@@ -3,12 +3,14 @@
 //! chosen, its visible point, where photons will be gathered. On the way it
 //! collects what the path integrator would at those vertices: emission,
 //! the background of a ray that misses, the PA1 lights, and at the visible
-//! point one light sample (direct light; photons bring the rest).
+//! point one light sample (direct light; photons bring the rest), except
+//! in a photon-mapping look, whose photons bring the direct light too.
 
 use crate::bsdf::{Bsdf, GlassChoice};
 use crate::color::Color;
 use crate::integrator::path::light_sample;
 use crate::integrator::scatter::{bsdf_at, miss, pa1_lights, sample};
+use crate::look::SeenEmission;
 use crate::math::{Point3, Ray, Vec3};
 use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
@@ -64,7 +66,7 @@ pub fn trace<'a>(scene: &'a RenderScene, mut ray: Ray, sampler: &mut Sampler) ->
         };
         let at = scene.shade(&hit, &ray);
         if !at.material.emission.is_black() {
-            direct += throughput * at.material.emission;
+            direct += seen_emission(scene, throughput * at.material.emission, at.color);
         }
         if depth >= scene.max_depth() {
             break;
@@ -105,5 +107,15 @@ pub fn trace<'a>(scene: &'a RenderScene, mut ray: Ray, sampler: &mut Sampler) ->
     CameraPath {
         direct,
         visible: None,
+    }
+}
+
+/// Emission `seen` by a camera path, by a photon-mapping look's rule
+/// (`color`: the emitter's colour there).
+fn seen_emission(scene: &RenderScene, seen: Color, color: Color) -> Color {
+    match scene.look().photons.map(|look| look.seen_emission) {
+        None | Some(SeenEmission::Plain) => seen,
+        Some(SeenEmission::TimesColor) => seen * color,
+        Some(SeenEmission::Clamped) => seen.map(|c| c.clamp(0.0, 1.0)),
     }
 }

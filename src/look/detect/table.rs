@@ -57,6 +57,12 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
                --look wso renders them as W-Solaris's path tracer did",
     },
     Fingerprint {
+        dialect: Dialect::Prop,
+        evidence: Evidence::Dialect,
+        look: Look::TSC,
+        says: "Tschal-rsa's photon mapper (its materials' `prop` words)",
+    },
+    Fingerprint {
         dialect: Dialect::Cyy,
         evidence: Evidence::Dialect,
         look: Look::CYY,
