@@ -37,6 +37,7 @@ pub mod medium;
 pub mod metrics;
 pub mod pairs;
 pub mod plot;
+pub mod preview;
 pub mod progress;
 pub mod render;
 pub mod render_job;

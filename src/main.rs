@@ -53,6 +53,9 @@ enum Command {
     /// Print a shell completion script (bash, zsh or fish) to standard output.
     #[command(after_help = examples::COMPLETIONS)]
     Completions(commands::completions::CompletionsArgs),
+    /// Render a scene progressively and watch it converge in a browser (127.0.0.1 only).
+    #[command(after_help = examples::VIEW)]
+    View(commands::view::ViewArgs),
 }
 
 fn main() -> ExitCode {
@@ -70,6 +73,7 @@ fn main() -> ExitCode {
         Command::Converge(args) => commands::converge::run(&args),
         Command::Plot(args) => commands::converge::plot(&args),
         Command::Completions(args) => commands::completions::run(&args, Cli::command()),
+        Command::View(args) => commands::view::run(&args),
     };
     let failed = match result {
         Ok(()) => false,

@@ -4,9 +4,9 @@
 //!
 //! Every run has a deadline (`common::DEADLINE`): the old build waited on a
 //! pipe forever. `HOSTILE_BIN=old-binary` runs the tests against another
-//! build. An `-o` onto a device is not tried here: an old build would
-//! replace the device node (as root, `/dev/null` itself); the named pipe
-//! goes through the same check.
+//! build. An `-o` onto a device is tried on a node made in the test's own
+//! folder (`mknod`, as root), never on `/dev/null` itself: an old build
+//! replaced the node it was given with a regular file.
 
 #![cfg(unix)]
 
@@ -149,6 +149,37 @@ fn an_output_onto_a_named_pipe_replaced_it_with_a_file() {
     use std::os::unix::fs::FileTypeExt;
     let kind = std::fs::symlink_metadata(dir.join("o.bmp")).expect("still there");
     assert!(kind.file_type().is_fifo(), "the pipe was replaced");
+    assert!(leftovers(&dir).is_empty(), "{:?}", leftovers(&dir));
+}
+
+/// Makes a character device at `path` like `/dev/null` (1, 3) with
+/// `mknod`; false where that is not allowed (not root, no `mknod`).
+fn make_null_device(path: &Path) -> bool {
+    std::process::Command::new("mknod")
+        .arg(path)
+        .args(["c", "1", "3"])
+        .stderr(std::process::Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success())
+}
+
+#[test]
+fn an_output_onto_a_device_replaced_it_with_a_file() {
+    let dir = fresh_dir("device-output");
+    if !make_null_device(&dir.join("null.png")) {
+        println!("skipped: cannot mknod (not root?)");
+        return;
+    }
+    // The device itself, and a symlink to it (outputs' links are followed).
+    std::os::unix::fs::symlink(dir.join("null.png"), dir.join("link.png")).expect("symlink");
+    for output in ["null.png", "link.png"] {
+        let ran = render_small(&dir, output, &[]);
+        let error = ran.refused();
+        assert!(error.contains("not a regular file"), "{output}: {error}");
+    }
+    use std::os::unix::fs::FileTypeExt;
+    let kind = std::fs::symlink_metadata(dir.join("null.png")).expect("still there");
+    assert!(kind.file_type().is_char_device(), "the device was replaced");
     assert!(leftovers(&dir).is_empty(), "{:?}", leftovers(&dir));
 }
 

@@ -10,6 +10,8 @@ Examples:
       an image to look at on a screen
   pathtracer check my_scene.txt
       read a scene file, report its mistakes with line and column, render nothing
+  pathtracer view my_scene.txt
+      watch the picture converge in a browser
   pathtracer compare output/ours.bmp my_render.png
       how far apart two images are, in numbers and to the eye
   pathtracer help render
@@ -95,3 +97,10 @@ Examples:
   pathtracer completions zsh > ~/.zfunc/_pathtracer
       (with `fpath+=~/.zfunc` before `compinit` in ~/.zshrc)
   pathtracer completions fish > ~/.config/fish/completions/pathtracer.fish";
+
+pub const VIEW: &str = "\
+Examples:
+  pathtracer view my_scene.txt
+      prints a URL on 127.0.0.1: open it to watch the picture sharpen
+  pathtracer view my_scene.txt --width 320 --height 240 --port 8080
+      smaller, at http://127.0.0.1:8080/";

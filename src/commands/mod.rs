@@ -19,6 +19,7 @@ pub mod lookalike;
 pub mod merge;
 pub mod render;
 pub mod sidecar;
+pub mod view;
 
 use std::path::{Path, PathBuf};
 

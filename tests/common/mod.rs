@@ -5,10 +5,13 @@
 
 mod run;
 mod shapes;
+mod view_client;
 #[allow(unused_imports)]
 pub use run::*;
 #[allow(unused_imports)]
 pub use shapes::*;
+#[allow(unused_imports)]
+pub use view_client::*;
 
 use std::path::{Path, PathBuf};
 
