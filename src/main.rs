@@ -139,17 +139,17 @@ mod tests {
                 .lines()
                 .filter_map(|line| line.strip_prefix("  pathtracer "))
                 .collect();
-            assert!(!lines.is_empty(), "{name}: no example command line");
+            assert!(
+                name == "pathtracer" || lines.iter().any(|line| line.starts_with(&name)),
+                "{name}: no example of the command itself"
+            );
             for line in lines {
                 let words = shell_words(&format!("pathtracer {line}"));
-                if name != "pathtracer" {
-                    assert_eq!(
-                        words[1], name,
-                        "{name}'s example runs another command: {line}"
-                    );
-                }
-                if let Err(error) = Cli::try_parse_from(&words) {
-                    panic!("{name}'s example `{line}` does not parse: {error}");
+                match Cli::try_parse_from(&words) {
+                    Ok(_) => {}
+                    // `pathtracer help render` shows a help, as it should.
+                    Err(error) if error.kind() == clap::error::ErrorKind::DisplayHelp => {}
+                    Err(error) => panic!("{name}'s example `{line}` does not parse: {error}"),
                 }
             }
         }
