@@ -22,6 +22,7 @@ pub mod checkpoint;
 pub mod color;
 pub mod console;
 pub mod converge;
+pub mod debug_sample;
 pub mod film;
 pub mod film_file;
 pub mod fixed_sum;

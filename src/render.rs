@@ -10,6 +10,7 @@ use rayon::prelude::*;
 
 use crate::film::{Film, PixelSum, SplatSums};
 use crate::image_io::Image;
+use crate::integrator::path_log::{PathLog, Silent};
 use crate::integrator::{CameraSample, Integrator, Splats};
 use crate::interrupt;
 use crate::limits::MemoryBudget;
@@ -319,7 +320,7 @@ impl<'a> Renderer<'a> {
                                     sample,
                                 };
                                 let mut splats = Splats::default();
-                                let value = self.trace_sample(at, &mut splats);
+                                let value = self.trace_sample(at, &mut splats, &mut Silent);
                                 pixel.add(value, settings.clamp);
                                 for &(sx, sy, splat) in splats.iter() {
                                     splat_sums.add((height - 1 - sy) * width + sx, splat);
@@ -355,7 +356,12 @@ impl<'a> Renderer<'a> {
 
     /// One camera sample: a position under the 2x2 sub-pixels' tent filter
     /// (see `subpixel`), lens and time only where the scene needs them.
-    fn trace_sample(&self, at: PixelSample, splats: &mut Splats) -> crate::color::Color {
+    pub(crate) fn trace_sample(
+        &self,
+        at: PixelSample,
+        splats: &mut Splats,
+        log: &mut impl PathLog,
+    ) -> crate::color::Color {
         let settings = self.settings;
         let mut sampler = Sampler::new(
             settings.sampler,
@@ -382,16 +388,17 @@ impl<'a> Renderer<'a> {
         };
         settings
             .integrator
-            .radiance(self.scene, ray, &sample, &mut sampler, splats)
+            .radiance_logged(self.scene, ray, &sample, &mut sampler, splats, log)
     }
 }
 
 /// Which sample of which pixel is traced.
 #[derive(Clone, Copy)]
-struct PixelSample {
-    x: usize,
+pub(crate) struct PixelSample {
+    pub x: usize,
     /// Row from the bottom of the image.
-    y: usize,
-    pixel_index: u64,
-    sample: u32,
+    pub y: usize,
+    /// Row from the top times the width, plus `x` (what seeds the sampler).
+    pub pixel_index: u64,
+    pub sample: u32,
 }

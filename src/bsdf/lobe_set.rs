@@ -111,6 +111,12 @@ impl LobeSet {
         self.smooth_lobes < self.lobes.len()
     }
 
+    /// Its lobes with their weights (as built; angular weights replace
+    /// the first three at a hit).
+    pub fn weighted(&self) -> impl Iterator<Item = (&Lobe, f64)> {
+        self.lobes.iter().zip(self.weights.iter().copied())
+    }
+
     pub fn is_empty(&self) -> bool {
         self.lobes.is_empty()
     }

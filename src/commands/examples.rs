@@ -43,7 +43,9 @@ Examples:
   pathtracer render my_scene.txt --time-budget 60
       as many samples as fit in a minute
   pathtracer render my_scene.txt --look physical
-      with this project's physically based conventions instead of the file's renderer's";
+      with this project's physically based conventions instead of the file's renderer's
+  pathtracer render my_scene.txt --debug-sample 120,80,0
+      print the path of sample 0 of pixel (120, 80), every vertex and term, no image";
 
 pub const MERGE: &str = "\
 Examples:

@@ -13,6 +13,7 @@ pub mod check;
 pub mod compare;
 pub mod completions;
 pub mod converge;
+pub mod debug_sample;
 pub mod examples;
 pub mod job;
 pub mod lookalike;

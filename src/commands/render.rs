@@ -66,6 +66,11 @@ pub struct RenderArgs {
     /// settings); without one, start from the first sample.
     #[arg(long)]
     resume: bool,
+    /// Re-trace sample I of pixel (X, Y) alone (Y from the top) and print
+    /// its path: vertices, lobes, weights and every term it adds; no image
+    /// is written.
+    #[arg(long, value_name = "X,Y,I", value_parser = super::debug_sample::parse)]
+    debug_sample: Option<super::debug_sample::Which>,
 }
 
 /// A time budget: more than 0 and at most a year of seconds.
@@ -87,6 +92,9 @@ fn parse_interval(text: &str) -> Result<f64, String> {
 }
 
 pub fn run(args: &RenderArgs) -> Result<(), String> {
+    if let Some(which) = args.debug_sample {
+        return super::debug_sample::run(&args.scene, which, args.spp, &args.sampling);
+    }
     if let Some(part) = &args.job.film {
         if args.output.is_some() || args.target_error.is_some() || args.time_budget.is_some() {
             return Err(

@@ -5,6 +5,7 @@ pub mod caustics;
 pub mod lights;
 pub mod original;
 pub mod path;
+pub mod path_log;
 pub mod raycast;
 pub mod scatter;
 pub mod split;
@@ -14,6 +15,7 @@ use crate::color::Color;
 use crate::math::Ray;
 use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
+use path_log::{PathEvent, PathLog, Silent, Term};
 
 pub use crate::look::Integrator;
 
@@ -28,12 +30,34 @@ impl Integrator {
         sampler: &mut Sampler,
         splats: &mut Splats,
     ) -> Color {
-        match self {
-            Integrator::Original => original::radiance(scene, ray, sampler),
+        self.radiance_logged(scene, ray, sample, sampler, splats, &mut Silent)
+    }
+
+    /// [`Integrator::radiance`], reporting what the path does to `log`
+    /// (ray casting and paths through media report their estimate only).
+    #[inline(always)]
+    pub fn radiance_logged(
+        &self,
+        scene: &RenderScene,
+        ray: Ray,
+        sample: &CameraSample,
+        sampler: &mut Sampler,
+        splats: &mut Splats,
+        log: &mut impl PathLog,
+    ) -> Color {
+        let whole = match self {
+            Integrator::Original => return original::radiance(scene, ray, sampler, log),
             Integrator::Path if scene.media() => volpath::radiance(scene, ray, sampler),
-            Integrator::Path => path::radiance(scene, ray, sample, sampler, splats),
+            Integrator::Path => return path::radiance(scene, ray, sample, sampler, splats, log),
             Integrator::RayCast => raycast::radiance(scene, ray),
-        }
+        };
+        log.record(|| PathEvent::Added {
+            depth: 0,
+            term: Term::Estimate,
+            mis_weight: None,
+            value: whole,
+        });
+        whole
     }
 }
 

@@ -41,6 +41,7 @@ use crate::shading::Shading;
 use crate::spectral::PathSpectrum;
 
 use super::caustics::{self, CausticVertex};
+use super::path_log::{PathEvent, PathLog, Term};
 use super::scatter::{bsdf_at, emitter_choice, miss, pa1_lights, sample};
 use super::split;
 use super::{CameraSample, Splats};
@@ -102,6 +103,7 @@ pub fn radiance(
     sample_of: &CameraSample,
     sampler: &mut Sampler,
     splats: &mut Splats,
+    log: &mut impl PathLog,
 ) -> Color {
     let mut result = Color::BLACK;
     // RGB until a dispersive dielectric splits the path (see `spectral`),
@@ -132,15 +134,34 @@ pub fn radiance(
     };
     loop {
         let Some(hit) = scene.intersect(&ray) else {
-            result += if spectrum.is_rgb() {
+            let background = if spectrum.is_rgb() {
                 miss(scene, depth, throughput)
             } else {
                 miss_split(scene, depth, throughput, &spectrum)
             };
+            add(
+                &mut result,
+                log,
+                depth + 1,
+                Term::Background,
+                None,
+                background,
+            );
+            log.record(|| PathEvent::Ended {
+                depth: depth + 1,
+                why: "the ray found nothing",
+            });
             break;
         };
         let at = scene.shade(&hit, &ray);
         let material = at.material;
+        log.record(|| PathEvent::Hit {
+            depth: depth + 1,
+            point: at.point,
+            normal: at.normal,
+            material: hit.material,
+            lobes: Box::new(material.lobes.clone()),
+        });
         if !material.emission.is_black() {
             let weight = match (origin, track) {
                 (None, Some(track)) if track.chain > 0 => {
@@ -160,10 +181,22 @@ pub fn radiance(
                     power_heuristic(from.pdf, light_pdf)
                 }
             };
-            result += throughput * spectrum.factor(material.emission) * weight;
+            let emission = throughput * spectrum.factor(material.emission) * weight;
+            add(
+                &mut result,
+                log,
+                depth + 1,
+                Term::Emission,
+                Some(weight),
+                emission,
+            );
         }
         depth += 1;
         if depth > scene.max_depth() {
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "the deepest hit",
+            });
             break;
         }
         let wo = -ray.direction;
@@ -171,13 +204,18 @@ pub fn radiance(
         let dispersed;
         let mut bsdf = bsdf_at(scene, &at, &wo, GlassChoice::Fresnel);
         if bsdf.is_black() {
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "a black BSDF",
+            });
             break;
         }
         if bsdf.dispersion().is_some() {
             dispersed = disperse(&bsdf, &mut spectrum, &mut throughput, sampler);
             bsdf = bsdf.with_set(&dispersed);
         }
-        result += throughput * pa1_lights(scene, &at, &bsdf, &wo, &spectrum);
+        let lights = throughput * pa1_lights(scene, &at, &bsdf, &wo, &spectrum);
+        add(&mut result, log, depth, Term::DirectLights, None, lights);
         if depth == scene.max_depth()
             && scene.light_sample_ends_paths()
             && bsdf.lambert().is_some()
@@ -185,23 +223,33 @@ pub fn radiance(
         {
             // The last vertex: its bounce could only find emission, which
             // the light sample then counts alone (weight 1, no MIS).
-            result += throughput
+            let last = throughput
                 * light_sample(
                     scene, &at, &bsdf, &wo, 1.0, ray.time, sampler, &spectrum, false,
                 );
+            add(&mut result, log, depth, Term::LastLightSample, None, last);
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "the last vertex's light sample",
+            });
             break;
         }
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "the BSDF gave no direction",
+            });
             break;
         };
         // Where the ray that found this vertex came from (for the caustic track).
         let arrived_from = origin.take();
         let split_here = split::splits(scene, depth, arrived_from.is_none());
         if split_here && bsdf.smooth_probability() > 0.0 {
-            result += throughput
+            let chain = throughput
                 * split::chain_emission(
                     scene, &at, &bsdf, &wo, depth, ray.time, sampler, &spectrum,
                 );
+            add(&mut result, log, depth, Term::SplitChain, None, chain);
         }
         let direction = scattered.wi;
         if scattered.delta {
@@ -213,15 +261,17 @@ pub fn radiance(
         } else {
             delta_run = 0;
             let smooth = bsdf.smooth_probability();
-            result += throughput
+            let direct = throughput
                 * light_sample(
                     scene, &at, &bsdf, &wo, smooth, ray.time, sampler, &spectrum, true,
                 );
+            add(&mut result, log, depth, Term::LightSample, None, direct);
             let lambert = bsdf.lambert();
             if let Some(f) = lambert
                 && let Some(y) = light_path.filter(|y| depth + 1 + y.chain <= scene.max_depth())
             {
-                result += throughput * caustics::connect(scene, &at, f / smooth, &y);
+                let connection = throughput * caustics::connect(scene, &at, f / smooth, &y);
+                add(&mut result, log, depth, Term::Connection, None, connection);
             }
             track = match arrived_from {
                 _ if !scene.light_paths() || lambert.is_none() => None,
@@ -241,7 +291,19 @@ pub fn radiance(
             });
         }
         throughput *= spectrum.factor(scattered.weight);
+        log.record(|| PathEvent::Scattered {
+            depth,
+            wi: direction,
+            weight: scattered.weight,
+            pdf: scattered.pdf,
+            delta: scattered.delta,
+            throughput,
+        });
         if spectrum.is_dark(&throughput) {
+            log.record(|| PathEvent::Ended {
+                depth,
+                why: "a dark throughput",
+            });
             break;
         }
         if depth >= ROULETTE_DEPTH {
@@ -250,8 +312,16 @@ pub fn radiance(
             let survival = spectrum.roulette_level(&throughput).sqrt().min(1.0);
             if survival < 1.0 {
                 if sampler.next_f64() >= survival {
+                    log.record(|| PathEvent::Ended {
+                        depth,
+                        why: "Russian roulette",
+                    });
                     break;
                 }
+                log.record(|| PathEvent::Survived {
+                    depth,
+                    probability: survival,
+                });
                 throughput = throughput / survival;
             }
         }
@@ -259,6 +329,25 @@ pub fn radiance(
     }
     debug_assert!(result.is_finite() || !throughput.is_finite());
     result
+}
+
+/// Adds `value`, a term of the sample, to `result`, and reports it.
+#[inline(always)]
+fn add(
+    result: &mut Color,
+    log: &mut impl PathLog,
+    depth: u32,
+    term: Term,
+    mis_weight: Option<f64>,
+    value: Color,
+) {
+    *result += value;
+    log.record(|| PathEvent::Added {
+        depth,
+        term,
+        mis_weight,
+        value,
+    });
 }
 
 /// The caustic track of a diffuse vertex `at` (as `y`) reached by `ray` from
