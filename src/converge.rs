@@ -39,17 +39,20 @@ pub fn converge(
         reference,
         max_spp,
         MemoryBudget::default(),
+        None,
         on_point,
     )
 }
 
-/// [`converge`], once the image's size is checked against `budget`.
+/// [`converge`], once the image's size is checked against `budget`, the
+/// error measured over `region` (see [`cut`]) when one is given.
 pub fn converge_within(
     scene: &RenderScene,
     settings: &RenderSettings,
     reference: &Image,
     max_spp: u32,
     budget: MemoryBudget,
+    region: Option<[usize; 4]>,
     mut on_point: impl FnMut(&ConvergencePoint),
 ) -> Result<Vec<ConvergencePoint>, String> {
     if max_spp == 0 {
@@ -78,7 +81,11 @@ pub fn converge_within(
         let samples = Samples::Range(done..target);
         seconds += renderer.render(&mut film, &samples, Stop::Never)?.seconds;
         done = target;
-        let comparison = compare(&film.to_image(), reference)?;
+        let image = film.to_image();
+        let comparison = match region {
+            Some(region) => compare(&cut(&image, region)?, &cut(reference, region)?)?,
+            None => compare(&image, reference)?,
+        };
         let point = ConvergencePoint {
             spp: done,
             seconds,
@@ -91,6 +98,28 @@ pub fn converge_within(
         next = next.saturating_mul(2);
     }
     Ok(points)
+}
+
+/// The pixels of `image` in `[x0, y0, x1, y1)`.
+pub fn cut(image: &Image, [x0, y0, x1, y1]: [usize; 4]) -> Result<Image, String> {
+    if !(x0 < x1 && y0 < y1 && x1 <= image.width && y1 <= image.height) {
+        return Err(format!(
+            "the region {x0},{y0},{x1},{y1} is not inside the {}x{} image",
+            image.width, image.height
+        ));
+    }
+    let pixels = (y0..y1)
+        .flat_map(|y| {
+            image.pixels[y * image.width + x0..y * image.width + x1]
+                .iter()
+                .copied()
+        })
+        .collect();
+    Ok(Image {
+        width: x1 - x0,
+        height: y1 - y0,
+        pixels,
+    })
 }
 
 pub const CSV_HEADER: &str = "spp,seconds,rmse,rel_mse,ssim";

@@ -8,9 +8,11 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
+use crate::converge::{ConvergencePoint, cut};
 use crate::image_io::Image;
 use crate::interrupt;
 use crate::math::Aabb;
+use crate::metrics::compare;
 use crate::progress::Progress;
 use crate::render::{RenderSettings, RenderStats, Stopped};
 use crate::render_scene::RenderScene;
@@ -308,4 +310,50 @@ pub fn render(
         stopped,
     };
     Ok((mapper.image(), stats))
+}
+
+/// Error against time of photon mapping: passes 1, 2, 4, ... up to
+/// `max_passes`, each stage's image compared with `reference` (cut to
+/// `region` first when one is given: `[x0, y0, x1, y1)`, rows from the top).
+pub fn converge(
+    scene: &RenderScene,
+    settings: &RenderSettings,
+    photon_settings: PhotonSettings,
+    reference: &Image,
+    max_passes: u32,
+    region: Option<[usize; 4]>,
+    mut on_point: impl FnMut(&ConvergencePoint),
+) -> Result<Vec<ConvergencePoint>, String> {
+    if max_passes == 0 {
+        return Err("the largest pass count (--max-spp) must be at least 1".to_string());
+    }
+    let start = Instant::now();
+    let mut mapper = PhotonMapper::new(scene, settings, photon_settings)?;
+    let progress = Progress::new(max_passes as u64 * mapper.work_per_pass(), None);
+    let mut seconds = start.elapsed().as_secs_f64();
+    let mut points = Vec::new();
+    let mut next = 1;
+    while mapper.passes < max_passes {
+        let stage = Instant::now();
+        while mapper.passes < next.min(max_passes) {
+            mapper.pass(&progress);
+        }
+        seconds += stage.elapsed().as_secs_f64();
+        let image = mapper.image();
+        let comparison = match region {
+            Some(region) => compare(&cut(&image, region)?, &cut(reference, region)?)?,
+            None => compare(&image, reference)?,
+        };
+        let point = ConvergencePoint {
+            spp: mapper.passes,
+            seconds,
+            rmse: comparison.rmse,
+            rel_mse: comparison.rel_mse,
+            ssim: comparison.ssim,
+        };
+        on_point(&point);
+        points.push(point);
+        next = next.saturating_mul(2);
+    }
+    Ok(points)
 }

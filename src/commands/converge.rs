@@ -5,12 +5,16 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use pathtracer::converge::{Reach, converge_within, read_csv_series, time_to_reach, to_csv};
+use pathtracer::converge::{
+    ConvergencePoint, Reach, converge_within, read_csv_series, time_to_reach, to_csv,
+};
 use pathtracer::image_io::{
     Encoding, PendingFile, commit_together, encode_image, read_image, refuse_inputs,
     refuse_shared_outputs,
 };
+use pathtracer::integrator::Integrator;
 use pathtracer::limits::{MAX_TABLE_BYTES, read_text_within};
+use pathtracer::photon_render;
 use pathtracer::plot::{Series, check_plottable, log_log_svg};
 use pathtracer::render::render_within;
 
@@ -40,8 +44,26 @@ pub struct ConvergeArgs {
     /// SVG plot of relative MSE against seconds; default output/<scene>_converge.svg.
     #[arg(long)]
     plot: Option<PathBuf>,
+    /// Measure the error over this region only: x0,y0,x1,y1 (pixels,
+    /// rows from the top, the end excluded).
+    #[arg(long, value_parser = parse_region)]
+    region: Option<[usize; 4]>,
     #[command(flatten)]
     sampling: SamplingOptions,
+}
+
+fn parse_region(text: &str) -> Result<[usize; 4], String> {
+    let values: Vec<usize> = text
+        .split(',')
+        .map(|v| v.trim().parse::<usize>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| format!("'{text}': expected x0,y0,x1,y1 in pixels"))?;
+    match values[..] {
+        [x0, y0, x1, y1] if x0 < x1 && y0 < y1 => Ok([x0, y0, x1, y1]),
+        _ => Err(format!(
+            "'{text}': expected x0,y0,x1,y1 with x0 < x1 and y0 < y1"
+        )),
+    }
 }
 
 pub fn run(args: &ConvergeArgs) -> Result<(), String> {
@@ -90,6 +112,10 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
                 args.sampling
                     .settings(scene.description(), args.reference_spp, true);
             reference_settings.seed = settings.seed.wrapping_add(REFERENCE_SEED_OFFSET);
+            if reference_settings.integrator == Integrator::Sppm {
+                // Photon mapping converges to the path integrator's image.
+                reference_settings.integrator = Integrator::Path;
+            }
             pathtracer::stderr_line!(
                 "rendering a reference at {} spp into {}",
                 args.reference_spp,
@@ -103,7 +129,7 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
         }
     };
     say!("spp  seconds  rmse  rel_mse  ssim");
-    let points = converge_within(&scene, &settings, &reference, args.max_spp, budget, |p| {
+    let report = |p: &ConvergencePoint| {
         say!(
             "{} {:.3} {:.6} {:.6e} {:.4}",
             p.spp,
@@ -112,7 +138,29 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
             p.rel_mse,
             p.ssim
         )
-    })?;
+    };
+    let points = if settings.integrator == Integrator::Sppm {
+        let photons = args.sampling.photons.settings();
+        photon_render::converge(
+            &scene,
+            &settings,
+            photons,
+            &reference,
+            args.max_spp,
+            args.region,
+            report,
+        )?
+    } else {
+        converge_within(
+            &scene,
+            &settings,
+            &reference,
+            args.max_spp,
+            budget,
+            args.region,
+            report,
+        )?
+    };
     csv_file.write(to_csv(&points).as_bytes())?;
     let name = args
         .scene
