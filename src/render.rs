@@ -372,6 +372,7 @@ impl<'a> Renderer<'a> {
         let (film_x, film_y) = match settings.look.pixels {
             PixelSampling::Tent => film_position(at.x, at.y, sampler.next_2d()),
             PixelSampling::Centre => (at.x as f64 + 0.5, at.y as f64 + 0.5),
+            PixelSampling::Corner => (at.x as f64, at.y as f64),
         };
         let plan = self.scene.plan();
         let lens = if plan.lens {

@@ -10,6 +10,7 @@ pub mod raycast;
 pub mod scatter;
 pub mod split;
 pub mod volpath;
+pub mod whitted;
 
 use crate::color::Color;
 use crate::math::Ray;
@@ -50,6 +51,10 @@ impl Integrator {
             Integrator::Path if scene.media() => volpath::radiance(scene, ray, sampler),
             Integrator::Path => return path::radiance(scene, ray, sample, sampler, splats, log),
             Integrator::RayCast => raycast::radiance(scene, ray),
+            Integrator::Whitted => whitted::radiance_shadowed(scene, ray, scene.max_depth()),
+            Integrator::WhittedUnshadowed => {
+                whitted::radiance_unshadowed(scene, ray, scene.max_depth())
+            }
         };
         log.record(|| PathEvent::Added {
             depth: 0,
