@@ -14,6 +14,7 @@ use pathtracer::image_io::{
 };
 use pathtracer::integrator::{Integrator, split};
 use pathtracer::interrupt;
+use pathtracer::photon_render;
 use pathtracer::render::{Progress, RenderSettings, Renderer};
 use pathtracer::render_job::{Crop, JobHeader};
 use pathtracer::render_scene::RenderScene;
@@ -170,6 +171,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
             .map(Duration::from_secs_f64),
         header,
     };
+    check_photon_options(args, &settings)?;
     let mut film = args.sampling.film(&settings)?;
     if args.resume {
         match checkpoints.read(args.sampling.scene.memory_budget())? {
@@ -183,7 +185,14 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     // From here a first SIGINT or SIGTERM lets the samples in flight finish
     // and the partial image (and checkpoint) be written.
     let _graceful = interrupt::Graceful::start();
-    let (stats, written) = if adaptive {
+    // Photon mapping renders an image, not a film.
+    let mut photon_image = None;
+    let (stats, written) = if settings.integrator == Integrator::Sppm {
+        let photons = args.sampling.photons.settings();
+        let (image, stats) = photon_render::render(&scene, &settings, photons, true)?;
+        photon_image = Some(image);
+        (stats, CheckpointStats::default())
+    } else if adaptive {
         let progress = progress_for(&film, settings.spp, rule);
         let renderer = Renderer::new(&scene, &settings, progress)?;
         let stats = render_adaptive(&renderer, rule, &mut film)?;
@@ -193,19 +202,23 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         let renderer = Renderer::new(&scene, &settings, Progress::new(samples.count(&film), None))?;
         render_resumable(&renderer, &mut film, &checkpoints)?
     };
-    let image = film.to_image();
+    let held = match photon_image {
+        Some(_) => stats.samples,
+        None => film.samples(),
+    };
+    let image = photon_image.unwrap_or_else(|| film.to_image());
     if args.stats {
         print_phases(&scene, &settings, world_seconds, stats.seconds);
     }
     image_file.write(&encode_image(&output, &image, &encoding)?)?;
     let pixels = (settings.width as u64 * settings.height as u64).max(1);
     // What the image holds (a resumed render's earlier samples too).
-    let reached = film.samples() as f64 / pixels as f64;
+    let reached = held as f64 / pixels as f64;
     let complete = stats.stopped.is_none();
     if let Some(sidecar) = &mut sidecar_file {
         let made = Made {
             spp: reached,
-            samples: film.samples(),
+            samples: held,
             spp_asked: settings.spp,
             complete,
             seconds: Some(stats.seconds),
@@ -253,6 +266,32 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         say!(
             "{}: the render so far; `render --resume` with the same arguments continues it",
             checkpoints.path.display()
+        );
+    }
+    Ok(())
+}
+
+/// Refuses what photon mapping does not do, and its options without it.
+fn check_photon_options(args: &RenderArgs, settings: &RenderSettings) -> Result<(), String> {
+    if settings.integrator != Integrator::Sppm {
+        if args.sampling.photons.given() {
+            return Err(format!(
+                "--photons-per-pass, --initial-radius and --alpha are options of --integrator sppm, not of the {} integrator",
+                settings.integrator.name()
+            ));
+        }
+        return Ok(());
+    }
+    if args.target_error.is_some() || args.time_budget.is_some() {
+        return Err(
+            "--target-error and --time-budget are not for --integrator sppm: photon mapping renders --spp passes, each pixel's error shrinking with its radius"
+                .to_string(),
+        );
+    }
+    if args.checkpoint.is_some() || args.resume {
+        return Err(
+            "--checkpoint and --resume are not for --integrator sppm: a photon-mapped pixel keeps a radius and photon count that checkpoints do not hold"
+                .to_string(),
         );
     }
     Ok(())

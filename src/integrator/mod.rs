@@ -9,6 +9,7 @@ pub mod path_log;
 pub mod raycast;
 pub mod scatter;
 pub mod split;
+pub mod sppm;
 pub mod volpath;
 pub mod whitted;
 
@@ -55,6 +56,10 @@ impl Integrator {
             Integrator::WhittedUnshadowed => {
                 whitted::radiance_unshadowed(scene, ray, scene.max_depth())
             }
+            // Photon mapping renders whole passes (`photon_render`), not
+            // camera samples: `Renderer::new` refuses it. A camera sample
+            // gets the path integrator's estimate, the image SPPM converges to.
+            Integrator::Sppm => return path::radiance(scene, ray, sample, sampler, splats, log),
         };
         log.record(|| PathEvent::Added {
             depth: 0,

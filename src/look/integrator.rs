@@ -28,13 +28,17 @@ pub enum Integrator {
     /// Schlick's weight times `specularColor` and the refracted ray by the
     /// rest, at index 1 (emily-jia's; see `integrator::whitted`).
     WhittedUnshadowed,
+    /// Stochastic progressive photon mapping (see `integrator::sppm`):
+    /// passes of visible points and photons, rendered by `sppm::render`.
+    Sppm,
 }
 
 impl Integrator {
-    pub const ALL: [Integrator; 5] = [
+    pub const ALL: [Integrator; 6] = [
         Integrator::Path,
         Integrator::Original,
         Integrator::RayCast,
+        Integrator::Sppm,
         Integrator::Whitted,
         Integrator::WhittedUnshadowed,
     ];
@@ -56,6 +60,7 @@ impl Integrator {
             Integrator::RayCast => "raycast",
             Integrator::Whitted => "whitted",
             Integrator::WhittedUnshadowed => "whitted-unshadowed",
+            Integrator::Sppm => "sppm",
         }
     }
 
