@@ -11,8 +11,10 @@ macro_rules! say {
 
 pub mod check;
 pub mod compare;
+pub mod completions;
 pub mod converge;
 pub mod debug_sample;
+pub mod examples;
 pub mod job;
 pub mod lookalike;
 pub mod merge;
@@ -26,7 +28,7 @@ use clap::Args;
 
 use pathtracer::allocation::check_available;
 use pathtracer::film::Film;
-use pathtracer::image_io::{Encoding, Tonemap};
+use pathtracer::image_io::{Encoding, Tonemap, is_hdr};
 use pathtracer::integrator::Integrator;
 use pathtracer::integrator::sppm::PhotonSettings;
 use pathtracer::limits::{MAX_IMAGE_SIDE, MAX_PATH_DEPTH, MemoryBudget};
@@ -269,6 +271,34 @@ impl SamplingOptions {
             dispersion: self.scene.dispersion,
         }
     }
+}
+
+impl SamplingOptions {
+    /// A note when `settings` render fewer samples per pixel than the
+    /// `asked`: a look that ray casts through pixel centres (PA1's) renders
+    /// one, whatever `--spp` says.
+    pub fn spp_notice(&self, settings: &RenderSettings, asked: u32) -> Option<String> {
+        (settings.spp < asked).then(|| {
+            format!(
+                "note: the {} look casts one ray through each pixel centre, as the course \
+                 framework did: 1 spp, not the {asked} asked (--look original path-traces it)",
+                settings.look.name
+            )
+        })
+    }
+}
+
+/// The line after an image written as linear 8-bit (no gamma, no tone
+/// curve): how to get one to look at.
+pub fn linear_output_hint(output: &Path, encoding: &Encoding) -> Option<String> {
+    let linear = encoding.gamma.is_none() && encoding.tonemap == Tonemap::None;
+    (linear && !is_hdr(output)).then(|| {
+        format!(
+            "{}: linear 8-bit, as the course framework wrote it (dark on a screen); \
+             --gamma 2.2 writes a display-encoded image",
+            output.display()
+        )
+    })
 }
 
 /// A finite number above 0 (`nan`, `inf`, 0 and negative numbers are refused).

@@ -21,10 +21,14 @@ use pathtracer::render_scene::RenderScene;
 use pathtracer::scene::model::Scene;
 
 use super::sidecar::{Made, sidecar_json, sidecar_path};
-use super::{EncodingOptions, SamplingOptions, default_output, load_for_render, render_scene};
+use super::{
+    EncodingOptions, SamplingOptions, default_output, linear_output_hint, load_for_render,
+    render_scene,
+};
 
 #[derive(Args)]
 pub struct RenderArgs {
+    /// The scene file to render (the PA grammar or one of its dialects).
     scene: PathBuf,
     /// Output image (.bmp, .png, .pfm or .exr); default output/<scene name>.bmp.
     #[arg(short, long)]
@@ -33,8 +37,9 @@ pub struct RenderArgs {
     /// --target-error or --time-budget, the most that any pixel gets.
     #[arg(long, default_value_t = 40, value_parser = clap::value_parser!(u32).range(1..))]
     spp: u32,
-    /// Stop each pixel once its relative error (standard error of the mean
-    /// luminance over the mean) is at most this, e.g. 0.01.
+    /// Stop each pixel once its relative error is at most this, e.g. 0.01:
+    /// once the standard error of its mean luminance (the largest in its
+    /// 3x3 neighbourhood) is at most TARGET_ERROR x mean + 0.001.
     #[arg(long, value_parser = super::parse_positive)]
     target_error: Option<f64>,
     /// Stop the whole render within this many seconds of rendering (up to
@@ -148,6 +153,9 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     refuse_inputs(&outputs, &scene_inputs(&args.scene, &scene))?;
     let settings = args.sampling.settings(&scene, args.spp, !args.quiet);
     check_writable(&output, settings.width as usize, settings.height as usize)?;
+    if let Some(notice) = args.sampling.spp_notice(&settings, args.spp) {
+        pathtracer::stderr_line!("{notice}");
+    }
     let world_start = Instant::now();
     let scene = render_scene(scene, &settings);
     let world_seconds = world_start.elapsed().as_secs_f64();
@@ -262,6 +270,9 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
             None => String::new(),
         }
     );
+    if let Some(hint) = linear_output_hint(&output, &encoding) {
+        say!("{hint}");
+    }
     if !complete && !adaptive {
         say!(
             "{}: the render so far; `render --resume` with the same arguments continues it",

@@ -22,6 +22,7 @@ use super::{EncodingOptions, SamplingOptions, default_output, load_for_render, r
 
 #[derive(Args)]
 pub struct ViewArgs {
+    /// The scene file to render and show (the PA grammar or one of its dialects).
     scene: PathBuf,
     /// Port to listen on, on 127.0.0.1 only (0, the default: a free port;
     /// the URL is printed).
@@ -60,6 +61,9 @@ impl Prepared {
             .chain(scene.load.assets.iter().cloned())
             .collect();
         let settings = args.sampling.settings(&scene, args.spp, false);
+        if let Some(notice) = args.sampling.spp_notice(&settings, args.spp) {
+            pathtracer::stderr_line!("{notice}");
+        }
         let film = args.sampling.film(&settings)?;
         let scene = render_scene(scene, &settings);
         Ok(Prepared {
