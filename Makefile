@@ -11,8 +11,12 @@ BIN := target/release/pathtracer
 build:
 	$(CARGO) build --release
 
+# The image of `make render`. After an interrupted render (Ctrl-C), its
+# checkpoint OUT.checkpoint.exr is there and the next `make render` resumes it.
+OUT ?= output/$(basename $(notdir $(SCENE))).bmp
+
 render: build
-	$(BIN) render $(SCENE) --spp $(SPP)
+	$(BIN) render $(SCENE) --spp $(SPP) -o $(OUT)$(if $(wildcard $(OUT).checkpoint.exr), --resume)
 
 test:
 	$(CARGO) test --release

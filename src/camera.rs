@@ -1,6 +1,7 @@
 //! The camera of the original renderer: smallpt image plane, a canvas distance
 //! that lets the eye sit behind a wall, and an optional thin lens.
 
+use crate::geometry::surface_samples::concentric_disk;
 use crate::math::{Point3, Ray, Vec3};
 use crate::scene::model::{CameraDesc, FovAxis, LensShape};
 use crate::trig::sin_cos_turns;
@@ -191,25 +192,6 @@ pub fn lens_point(shape: LensShape, square: [f64; 2]) -> (f64, f64) {
         }
         LensShape::Square => (2.0 * square[0] - 1.0, 2.0 * square[1] - 1.0),
     }
-}
-
-/// Shirley and Chiu's concentric map from the unit square to the unit disk
-/// (uniform density; the original's squared-uniform lens was not).
-pub fn concentric_disk(square: [f64; 2]) -> (f64, f64) {
-    let a = 2.0 * square[0] - 1.0;
-    let b = 2.0 * square[1] - 1.0;
-    if a == 0.0 && b == 0.0 {
-        return (0.0, 0.0);
-    }
-    // The angle in turns: pi/4 (b/a), or pi/2 - pi/4 (a/b), over 2 pi.
-    let (radius, turns) = if a.abs() > b.abs() {
-        let turns = 0.125 * (b / a);
-        (a, if turns < 0.0 { turns + 1.0 } else { turns })
-    } else {
-        (b, 0.25 - 0.125 * (a / b))
-    };
-    let (sin, cos) = sin_cos_turns(turns);
-    (radius * cos, radius * sin)
 }
 
 #[cfg(test)]

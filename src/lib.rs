@@ -37,6 +37,7 @@ pub mod math;
 pub mod medium;
 pub mod metrics;
 pub mod pairs;
+pub mod photon_render;
 pub mod plot;
 pub mod preview;
 pub mod progress;

@@ -59,6 +59,10 @@ pub const MAX_WARNINGS_PER_KIND: usize = 5;
 /// Most control points of one Bezier or B-spline curve.
 pub const MAX_CONTROL_POINTS: usize = 4_096;
 
+/// Distinct field and block names of a scene file kept for look detection
+/// (`scene::build::distinct_words`); real files use fewer than 100.
+pub const MAX_KEPT_WORDS: usize = 1_024;
+
 /// Deepest nesting of groups and transforms in a scene file.
 pub const MAX_NESTING: usize = 256;
 

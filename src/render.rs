@@ -14,12 +14,11 @@ use crate::integrator::path_log::{PathLog, Silent};
 use crate::integrator::{CameraSample, Integrator, Splats};
 use crate::interrupt;
 use crate::limits::MemoryBudget;
-use crate::look::{Look, PixelSampling};
+use crate::look::Look;
 pub use crate::progress::{PROGRESS_LOG_SECONDS, Progress};
 use crate::render_scene::{RenderScene, SceneSettings};
 use crate::sampler::{Sampler, SamplerKind};
 use crate::spectral::Dispersion;
-use crate::subpixel::film_position;
 
 #[derive(Clone, Debug)]
 pub struct RenderSettings {
@@ -221,6 +220,12 @@ impl<'a> Renderer<'a> {
                 settings.scene()
             ));
         }
+        if settings.integrator == Integrator::Sppm {
+            return Err(
+                "--integrator sppm renders whole passes (photon_render), not pixel samples: `render` runs it, this command does not"
+                    .to_string(),
+            );
+        }
         let mut builder = rayon::ThreadPoolBuilder::new();
         if let Some(threads) = settings.threads {
             builder = builder.num_threads(threads.max(1));
@@ -369,18 +374,7 @@ impl<'a> Renderer<'a> {
             at.sample as u64,
             settings.seed,
         );
-        let (film_x, film_y) = match settings.look.pixels {
-            PixelSampling::Tent => film_position(at.x, at.y, sampler.next_2d()),
-            PixelSampling::Centre => (at.x as f64 + 0.5, at.y as f64 + 0.5),
-        };
-        let plan = self.scene.plan();
-        let lens = if plan.lens {
-            sampler.next_2d()
-        } else {
-            [0.5, 0.5]
-        };
-        let time = if plan.time { sampler.next_f64() } else { 0.0 };
-        let ray = self.scene.camera().ray(film_x, film_y, lens, time);
+        let (ray, lens) = self.scene.camera_ray(at.x, at.y, &mut sampler);
         let sample = CameraSample {
             pixel_x: at.x,
             pixel_y: at.y,

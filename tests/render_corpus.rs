@@ -6,7 +6,7 @@
 mod common;
 
 use pathtracer::integrator::Integrator;
-use pathtracer::render::{RenderSettings, render};
+use pathtracer::render::RenderSettings;
 use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::{LoadOptions, load_scene};
@@ -58,7 +58,7 @@ fn every_shared_scene_renders_without_nan_or_inf_samples() {
                 dispersion: None,
             };
             let name = format!("{} ({})", file.display(), integrator.name());
-            let (image, stats) = match render(&scene, &settings) {
+            let (image, stats) = match common::render_ready(&scene, &settings) {
                 Ok(result) => result,
                 Err(error) => {
                     failures.push(format!("{name}: {error}"));

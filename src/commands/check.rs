@@ -10,6 +10,7 @@ use super::SceneOptions;
 
 #[derive(Args)]
 pub struct CheckArgs {
+    /// The scene files to read (the PA grammar or one of its dialects).
     #[arg(required = true)]
     scenes: Vec<PathBuf>,
     #[command(flatten)]

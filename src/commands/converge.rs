@@ -1,7 +1,7 @@
 //! `pathtracer converge` (error against time for one scene) and
 //! `pathtracer plot` (several such curves in one SVG).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use clap::Args;
 
@@ -21,9 +21,11 @@ const REFERENCE_SEED_OFFSET: u64 = 0x5EED_F4EF;
 
 #[derive(Args)]
 pub struct ConvergeArgs {
+    /// The scene file to render at 1, 2, 4, ... samples per pixel.
     scene: PathBuf,
     /// Reference image (PFM for linear radiance). Without one, a reference is
-    /// first rendered at --reference-spp and saved next to the CSV.
+    /// first rendered at --reference-spp and saved next to the CSV, as
+    /// <scene name>_reference.pfm (default output/<scene name>_reference.pfm).
     #[arg(long)]
     reference: Option<PathBuf>,
     /// Samples per pixel of the reference rendered when none is given.
@@ -56,9 +58,9 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
     let mut svg_file = PendingFile::reserve(&svg)?;
     let mut reference_file = match &args.reference {
         Some(_) => None,
-        None => Some(PendingFile::reserve(&default_output(
-            &args.scene,
-            "_reference.pfm",
+        None => Some(PendingFile::reserve(&beside(
+            &csv,
+            &default_output(&args.scene, "_reference.pfm"),
         ))?),
     };
     let scene = load_for_render(&args.scene, &args.sampling.scene)?;
@@ -73,6 +75,9 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
     refuse_shared_outputs(&outputs)?;
     refuse_inputs(&outputs, &inputs)?;
     let settings = args.sampling.settings(&scene, args.max_spp, false);
+    if let Some(notice) = args.sampling.spp_notice(&settings, args.max_spp) {
+        pathtracer::stderr_line!("{notice}");
+    }
     args.sampling.check_size(&settings)?;
     let budget = args.sampling.scene.memory_budget();
     let scene = render_scene(scene, &settings);
@@ -124,6 +129,12 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
     Ok(())
 }
 
+/// `file`'s name in the folder of `neighbour`.
+fn beside(neighbour: &Path, file: &Path) -> PathBuf {
+    let name = file.file_name().unwrap_or_default();
+    neighbour.with_file_name(name)
+}
+
 #[derive(Args)]
 pub struct PlotArgs {
     /// CSV files with `seconds` and the plotted column; each is one curve,
@@ -133,8 +144,9 @@ pub struct PlotArgs {
     /// The SVG file to write.
     #[arg(short, long)]
     output: PathBuf,
-    #[arg(long, default_value = "")]
-    title: String,
+    /// The plot's title (default: "COLUMN against seconds").
+    #[arg(long)]
+    title: Option<String>,
     /// The column plotted against seconds.
     #[arg(long, default_value = "rel_mse")]
     column: String,
@@ -174,7 +186,11 @@ pub fn plot(args: &PlotArgs) -> Result<(), String> {
         series.push(Series { name, points });
     }
     check_plottable(&series)?;
-    let svg = log_log_svg(&args.title, "seconds", &args.column, &series);
+    let title = args
+        .title
+        .clone()
+        .unwrap_or_else(|| format!("{} against seconds", args.column));
+    let svg = log_log_svg(&title, "seconds", &args.column, &series);
     output.write(svg.as_bytes())?;
     output.commit()
 }

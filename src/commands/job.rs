@@ -65,6 +65,12 @@ pub fn run(
     let scene = load_for_render(scene_path, &sampling.scene)?;
     refuse_inputs(&[&part_file], &scene_inputs(scene_path, &scene))?;
     let settings = sampling.settings(&scene, samples.end, !quiet);
+    if settings.integrator == pathtracer::integrator::Integrator::Sppm {
+        return Err(
+            "render jobs (--film) are not for --integrator sppm: every pass of photon mapping needs the whole image's visible points"
+                .to_string(),
+        );
+    }
     let crop = job
         .crop
         .unwrap_or(Crop::full(settings.width, settings.height));

@@ -180,5 +180,12 @@ pub fn run(args: &MergeArgs) -> Result<(), String> {
         total.fireflies(),
         total.saturated(),
     );
+    if let Some(hint) = args
+        .output
+        .as_ref()
+        .and_then(|output| super::linear_output_hint(output, &encoding))
+    {
+        say!("{hint}");
+    }
     Ok(())
 }

@@ -11,8 +11,10 @@ macro_rules! say {
 
 pub mod check;
 pub mod compare;
+pub mod completions;
 pub mod converge;
 pub mod debug_sample;
+pub mod examples;
 pub mod job;
 pub mod lookalike;
 pub mod merge;
@@ -26,8 +28,9 @@ use clap::Args;
 
 use pathtracer::allocation::check_available;
 use pathtracer::film::Film;
-use pathtracer::image_io::{Encoding, Tonemap};
+use pathtracer::image_io::{Encoding, Tonemap, is_hdr};
 use pathtracer::integrator::Integrator;
+use pathtracer::integrator::sppm::PhotonSettings;
 use pathtracer::limits::{MAX_IMAGE_SIDE, MAX_PATH_DEPTH, MemoryBudget};
 use pathtracer::look::{Look, PixelSampling};
 use pathtracer::render::RenderSettings;
@@ -145,9 +148,10 @@ pub struct SamplingOptions {
     #[arg(long, default_value = "sobol", value_parser = parse_sampler)]
     pub sampler: SamplerKind,
     /// Estimator: `path` (next-event estimation with MIS), `original` (the
-    /// original renderer's estimator, the same expected image) or `raycast`
-    /// (the course framework's ray casting). Default: the look's (path, or
-    /// raycast for the pa1 look).
+    /// original renderer's estimator, the same expected image), `raycast`
+    /// (the course framework's ray casting) or `sppm` (stochastic
+    /// progressive photon mapping: --spp passes, see --photons-per-pass).
+    /// Default: the look's (path, or raycast for the pa1 look).
     #[arg(long, value_parser = parse_integrator)]
     pub integrator: Option<Integrator>,
     /// Scattering vertices before a path ends (default: the look's; the
@@ -172,7 +176,49 @@ pub struct SamplingOptions {
     #[arg(long, value_parser = parse_look)]
     pub look: Option<Look>,
     #[command(flatten)]
+    pub photons: PhotonOptions,
+    #[command(flatten)]
     pub scene: SceneOptions,
+}
+
+/// The parameters of `--integrator sppm` (see docs/sppm.md).
+#[derive(Args, Clone)]
+pub struct PhotonOptions {
+    /// sppm: photons traced per pass (default: one per pixel).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=pathtracer::integrator::sppm::options::MAX_PHOTONS_PER_PASS))]
+    pub photons_per_pass: Option<u64>,
+    /// sppm: the gathering radius of every pixel before its first photons,
+    /// in scene units (default: 1/200 of the diagonal of the box around
+    /// what the camera sees in the first pass).
+    #[arg(long, value_parser = parse_positive)]
+    pub initial_radius: Option<f64>,
+    /// sppm: the share of each pass's photons a pixel keeps, above 0 and at
+    /// most 1 (Hachisuka and Jensen's alpha; default 0.7).
+    #[arg(long, value_parser = parse_alpha)]
+    pub alpha: Option<f64>,
+}
+
+impl PhotonOptions {
+    pub fn settings(&self) -> PhotonSettings {
+        let defaults = PhotonSettings::default();
+        PhotonSettings {
+            photons_per_pass: self.photons_per_pass,
+            initial_radius: self.initial_radius,
+            alpha: self.alpha.unwrap_or(defaults.alpha),
+        }
+    }
+
+    /// Whether any of them was given.
+    pub fn given(&self) -> bool {
+        self.photons_per_pass.is_some() || self.initial_radius.is_some() || self.alpha.is_some()
+    }
+}
+
+fn parse_alpha(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(alpha) if alpha > 0.0 && alpha <= 1.0 => Ok(alpha),
+        _ => Err(format!("'{text}': expected a number above 0 and at most 1")),
+    }
 }
 
 impl SamplingOptions {
@@ -223,6 +269,34 @@ impl SamplingOptions {
             dispersion: self.scene.dispersion,
         }
     }
+}
+
+impl SamplingOptions {
+    /// A note when `settings` render fewer samples per pixel than the
+    /// `asked`: a look that ray casts through pixel centres (PA1's) renders
+    /// one, whatever `--spp` says.
+    pub fn spp_notice(&self, settings: &RenderSettings, asked: u32) -> Option<String> {
+        (settings.spp < asked).then(|| {
+            format!(
+                "note: the {} look casts one ray through each pixel centre, as the course \
+                 framework did: 1 spp, not the {asked} asked (--look original path-traces it)",
+                settings.look.name
+            )
+        })
+    }
+}
+
+/// The line after an image written as linear 8-bit (no gamma, no tone
+/// curve): how to get one to look at.
+pub fn linear_output_hint(output: &Path, encoding: &Encoding) -> Option<String> {
+    let linear = encoding.gamma.is_none() && encoding.tonemap == Tonemap::None;
+    (linear && !is_hdr(output)).then(|| {
+        format!(
+            "{}: linear 8-bit, as the course framework wrote it (dark on a screen); \
+             --gamma 2.2 writes a display-encoded image",
+            output.display()
+        )
+    })
 }
 
 /// A finite number above 0 (`nan`, `inf`, 0 and negative numbers are refused).

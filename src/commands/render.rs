@@ -14,16 +14,21 @@ use pathtracer::image_io::{
 };
 use pathtracer::integrator::{Integrator, split};
 use pathtracer::interrupt;
+use pathtracer::photon_render;
 use pathtracer::render::{Progress, RenderSettings, Renderer};
 use pathtracer::render_job::{Crop, JobHeader};
 use pathtracer::render_scene::RenderScene;
 use pathtracer::scene::model::Scene;
 
 use super::sidecar::{Made, sidecar_json, sidecar_path};
-use super::{EncodingOptions, SamplingOptions, default_output, load_for_render, render_scene};
+use super::{
+    EncodingOptions, SamplingOptions, default_output, linear_output_hint, load_for_render,
+    render_scene,
+};
 
 #[derive(Args)]
 pub struct RenderArgs {
+    /// The scene file to render (the PA grammar or one of its dialects).
     scene: PathBuf,
     /// Output image (.bmp, .png, .pfm or .exr); default output/<scene name>.bmp.
     #[arg(short, long)]
@@ -32,8 +37,9 @@ pub struct RenderArgs {
     /// --target-error or --time-budget, the most that any pixel gets.
     #[arg(long, default_value_t = 40, value_parser = clap::value_parser!(u32).range(1..))]
     spp: u32,
-    /// Stop each pixel once its relative error (standard error of the mean
-    /// luminance over the mean) is at most this, e.g. 0.01.
+    /// Stop each pixel once its relative error is at most this, e.g. 0.01:
+    /// once the standard error of its mean luminance (the largest in its
+    /// 3x3 neighbourhood) is at most TARGET_ERROR x mean + 0.001.
     #[arg(long, value_parser = super::parse_positive)]
     target_error: Option<f64>,
     /// Stop the whole render within this many seconds of rendering (up to
@@ -147,6 +153,9 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     refuse_inputs(&outputs, &scene_inputs(&args.scene, &scene))?;
     let settings = args.sampling.settings(&scene, args.spp, !args.quiet);
     check_writable(&output, settings.width as usize, settings.height as usize)?;
+    if let Some(notice) = args.sampling.spp_notice(&settings, args.spp) {
+        pathtracer::stderr_line!("{notice}");
+    }
     let world_start = Instant::now();
     let scene = render_scene(scene, &settings);
     let world_seconds = world_start.elapsed().as_secs_f64();
@@ -170,6 +179,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
             .map(Duration::from_secs_f64),
         header,
     };
+    check_photon_options(args, &settings)?;
     let mut film = args.sampling.film(&settings)?;
     if args.resume {
         match checkpoints.read(args.sampling.scene.memory_budget())? {
@@ -183,7 +193,14 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     // From here a first SIGINT or SIGTERM lets the samples in flight finish
     // and the partial image (and checkpoint) be written.
     let _graceful = interrupt::Graceful::start();
-    let (stats, written) = if adaptive {
+    // Photon mapping renders an image, not a film.
+    let mut photon_image = None;
+    let (stats, written) = if settings.integrator == Integrator::Sppm {
+        let photons = args.sampling.photons.settings();
+        let (image, stats) = photon_render::render(&scene, &settings, photons, true)?;
+        photon_image = Some(image);
+        (stats, CheckpointStats::default())
+    } else if adaptive {
         let progress = progress_for(&film, settings.spp, rule);
         let renderer = Renderer::new(&scene, &settings, progress)?;
         let stats = render_adaptive(&renderer, rule, &mut film)?;
@@ -193,19 +210,23 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         let renderer = Renderer::new(&scene, &settings, Progress::new(samples.count(&film), None))?;
         render_resumable(&renderer, &mut film, &checkpoints)?
     };
-    let image = film.to_image();
+    let held = match photon_image {
+        Some(_) => stats.samples,
+        None => film.samples(),
+    };
+    let image = photon_image.unwrap_or_else(|| film.to_image());
     if args.stats {
         print_phases(&scene, &settings, world_seconds, stats.seconds);
     }
     image_file.write(&encode_image(&output, &image, &encoding)?)?;
     let pixels = (settings.width as u64 * settings.height as u64).max(1);
     // What the image holds (a resumed render's earlier samples too).
-    let reached = film.samples() as f64 / pixels as f64;
+    let reached = held as f64 / pixels as f64;
     let complete = stats.stopped.is_none();
     if let Some(sidecar) = &mut sidecar_file {
         let made = Made {
             spp: reached,
-            samples: film.samples(),
+            samples: held,
             spp_asked: settings.spp,
             complete,
             seconds: Some(stats.seconds),
@@ -249,10 +270,39 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
             None => String::new(),
         }
     );
+    if let Some(hint) = linear_output_hint(&output, &encoding) {
+        say!("{hint}");
+    }
     if !complete && !adaptive {
         say!(
             "{}: the render so far; `render --resume` with the same arguments continues it",
             checkpoints.path.display()
+        );
+    }
+    Ok(())
+}
+
+/// Refuses what photon mapping does not do, and its options without it.
+fn check_photon_options(args: &RenderArgs, settings: &RenderSettings) -> Result<(), String> {
+    if settings.integrator != Integrator::Sppm {
+        if args.sampling.photons.given() {
+            return Err(format!(
+                "--photons-per-pass, --initial-radius and --alpha are options of --integrator sppm, not of the {} integrator",
+                settings.integrator.name()
+            ));
+        }
+        return Ok(());
+    }
+    if args.target_error.is_some() || args.time_budget.is_some() {
+        return Err(
+            "--target-error and --time-budget are not for --integrator sppm: photon mapping renders --spp passes, each pixel's error shrinking with its radius"
+                .to_string(),
+        );
+    }
+    if args.checkpoint.is_some() || args.resume {
+        return Err(
+            "--checkpoint and --resume are not for --integrator sppm: a photon-mapped pixel keeps a radius and photon count that checkpoints do not hold"
+                .to_string(),
         );
     }
     Ok(())

@@ -12,7 +12,10 @@ pub mod profile_seeds;
 pub mod rectangle;
 pub mod revolution;
 pub mod shape;
+mod shape_sampling;
 pub mod sphere;
+mod sphere_sampling;
+pub mod surface_samples;
 pub mod transform;
 pub mod triangle;
 
@@ -27,6 +30,8 @@ pub use rectangle::Rectangle;
 pub use revolution::Revolution;
 pub use shape::Shape;
 pub use sphere::{Sphere, SphereTest};
+pub use sphere_sampling::Cone;
+pub use surface_samples::ShapeSample;
 pub use transform::Transform;
 pub use triangle::Triangle;
 

@@ -9,6 +9,7 @@ pub mod path_log;
 pub mod raycast;
 pub mod scatter;
 pub mod split;
+pub mod sppm;
 pub mod volpath;
 
 use crate::color::Color;
@@ -50,6 +51,10 @@ impl Integrator {
             Integrator::Path if scene.media() => volpath::radiance(scene, ray, sampler),
             Integrator::Path => return path::radiance(scene, ray, sample, sampler, splats, log),
             Integrator::RayCast => raycast::radiance(scene, ray),
+            // Photon mapping renders whole passes (`photon_render`), not
+            // camera samples: `Renderer::new` refuses it. A camera sample
+            // gets the path integrator's estimate, the image SPPM converges to.
+            Integrator::Sppm => return path::radiance(scene, ray, sample, sampler, splats, log),
         };
         log.record(|| PathEvent::Added {
             depth: 0,

@@ -444,7 +444,7 @@ fn miss_split(
 /// each as the path's `spectrum` sees them. The caller multiplies by the
 /// throughput.
 #[allow(clippy::too_many_arguments)]
-fn light_sample(
+pub(super) fn light_sample(
     scene: &RenderScene,
     at: &Shading,
     bsdf: &Bsdf,

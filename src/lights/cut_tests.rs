@@ -4,10 +4,10 @@
 
 use std::f64::consts::PI;
 
-use super::emitter::uniform_sphere;
 use super::tests::built;
 use super::*;
 use crate::color::Color;
+use crate::geometry::surface_samples::uniform_sphere;
 use crate::look::Look;
 use crate::math::Ray;
 use crate::render_scene::{RenderScene, SceneSettings};

@@ -12,10 +12,11 @@
 
 use std::f64::consts::PI;
 
-use super::cut::{Cap, Cuts};
-use super::emitter::{EmitterShape, uniform_sphere};
-use super::{Distribution, Emitters, LightPathStarts};
+use super::cut::Cap;
+use super::{Distribution, Emitter, Emitters, LightPathStarts};
 use crate::color::Color;
+use crate::geometry::Sphere;
+use crate::geometry::surface_samples::uniform_sphere;
 use crate::math::{Point3, Vec3};
 use crate::world::WorldHit;
 
@@ -59,7 +60,7 @@ impl Emitters {
             let end = firsts.get(k + 1).copied().unwrap_or(self.entries.len());
             let solid_angle: f64 = self.entries[first..end]
                 .iter()
-                .map(|e| solid_angle(&e.shape, reference))
+                .map(|e| solid_angle(e, reference))
                 .sum();
             if solid_angle > MAX_LIGHT_PATH_SOLID_ANGLE {
                 weights[first..end].iter_mut().for_each(|w| *w = 0.0);
@@ -115,11 +116,58 @@ impl Emitters {
         u_side: f64,
     ) -> Option<EmissionPoint> {
         let (distribution, share) = self.light_path_distribution()?;
+        self.emission_point_of(
+            distribution,
+            share,
+            viewpoint,
+            time,
+            select,
+            u_point,
+            u_side,
+        )
+    }
+
+    /// [`Emitters::sample_emission_point`] over every emitter by power,
+    /// whatever light subpaths are restricted to: where the photons of
+    /// photon mapping leave from. The luminance of `pi emission / density`
+    /// (a photon's power) is [`Emitters::photon_power_unit`], twice that
+    /// for two-sided emitters.
+    pub fn sample_photon_origin(
+        &self,
+        viewpoint: &Point3,
+        time: f64,
+        select: f64,
+        u_point: [f64; 2],
+        u_side: f64,
+    ) -> Option<EmissionPoint> {
+        let distribution = self.distribution.as_ref()?;
+        self.emission_point_of(distribution, 1.0, viewpoint, time, select, u_point, u_side)
+    }
+
+    /// `pi` times the sum of the emitters' weights (emission luminance x
+    /// reachable area): the luminance of one photon's power from a
+    /// one-sided emitter, a scale for sums of photon powers (0 without
+    /// emitters).
+    pub fn photon_power_unit(&self) -> f64 {
+        PI * self.total_weight
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn emission_point_of(
+        &self,
+        distribution: &Distribution,
+        share: f64,
+        viewpoint: &Point3,
+        time: f64,
+        select: f64,
+        u_point: [f64; 2],
+        u_side: f64,
+    ) -> Option<EmissionPoint> {
         let (index, probability) = distribution.sample(select);
         let probability = probability * share;
         let emitter = &self.entries[index];
         let (point, normal, area_density, sides) =
-            emission_point(&emitter.shape, viewpoint, time, u_point, u_side)?;
+            emission_point(emitter, viewpoint, time, u_point, u_side)?;
         let density = probability * area_density / sides;
         (density > 0.0 && density.is_finite()).then_some(EmissionPoint {
             point,
@@ -150,27 +198,22 @@ impl Emitters {
         if probability <= 0.0 {
             return 0.0;
         }
-        let shape = &self.entries[index].shape;
-        match *shape {
-            EmitterShape::Sphere {
-                center,
-                motion,
-                radius,
-                cuts,
-            } => {
-                let center = center + motion * time;
-                let outward = (hit.point - center) / radius;
+        let emitter = &self.entries[index];
+        match emitter.sphere() {
+            Some(sphere) => {
+                let center = sphere.center_at(time);
+                let outward = (hit.point - center) / sphere.radius;
                 if outward.dot(direction) <= 0.0 {
                     return 0.0;
                 }
-                let (cap, area) = sphere_region(&center, radius, &cuts, viewpoint);
+                let (cap, area) = sphere_region(emitter, sphere, viewpoint);
                 match cap {
                     Some(cap) if !cap.contains(&outward) => 0.0,
                     _ => probability / area,
                 }
             }
-            _ => {
-                let area = shape.area();
+            None => {
+                let area = emitter.area();
                 if area > 0.0 {
                     probability / area * 0.5
                 } else {
@@ -181,11 +224,11 @@ impl Emitters {
     }
 }
 
-/// The solid angle `shape` subtends from `reference`, near enough to tell a
+/// The solid angle `emitter` subtends from `reference`, near enough to tell a
 /// small light from a sky-sized one: a sphere by its cone (a cut sphere by
 /// its cap, taken flat), a planar emitter by area times cosine over the
 /// squared distance of its centre.
-fn solid_angle(shape: &EmitterShape, reference: &Point3) -> f64 {
+fn solid_angle(emitter: &Emitter, reference: &Point3) -> f64 {
     let flat = |area: f64, centre: Point3, normal: Vec3| {
         let offset = reference - centre;
         let distance = offset.norm();
@@ -200,92 +243,58 @@ fn solid_angle(shape: &EmitterShape, reference: &Point3) -> f64 {
             0.0
         }
     };
-    match *shape {
-        EmitterShape::Sphere {
-            center,
-            motion,
-            radius,
-            cuts,
-        } => {
-            let center = center + motion * 0.5;
-            if let Some(cap) = cuts.cap(&center, radius, reference) {
-                let rim_radius2 = radius * radius * (1.0 - cap.min_cos * cap.min_cos);
-                let rim_centre = center + cap.axis * (radius * cap.min_cos);
-                return flat(PI * rim_radius2, rim_centre, cap.axis);
-            }
-            let distance2 = (center - reference).norm_squared();
-            if distance2 <= radius * radius {
-                return 4.0 * PI;
-            }
-            2.0 * PI * (1.0 - (1.0 - radius * radius / distance2).sqrt())
-        }
-        EmitterShape::Triangle {
-            vertices: [a, b, c],
-        } => flat(shape.area(), (a + b + c) / 3.0, (b - a).cross(&(c - a))),
-        EmitterShape::Parallelogram {
-            origin,
-            edge_u,
-            edge_v,
-        } => flat(
-            shape.area(),
-            origin + (edge_u + edge_v) * 0.5,
-            edge_u.cross(&edge_v),
-        ),
-        EmitterShape::Ellipse {
-            center,
-            axis_u,
-            axis_v,
-        } => flat(shape.area(), center, axis_u.cross(&axis_v)),
+    let Some(sphere) = emitter.sphere() else {
+        return match emitter.flat_frame() {
+            Some((centre, normal)) => flat(emitter.area(), centre, normal),
+            None => 0.0,
+        };
+    };
+    let (center, radius) = (sphere.center_at(0.5), sphere.radius);
+    if let Some((_, cap)) = emitter.cap(reference) {
+        let rim_radius2 = radius * radius * (1.0 - cap.min_cos * cap.min_cos);
+        let rim_centre = center + cap.axis * (radius * cap.min_cos);
+        return flat(PI * rim_radius2, rim_centre, cap.axis);
     }
+    let distance2 = (center - reference).norm_squared();
+    if distance2 <= radius * radius {
+        return 4.0 * PI;
+    }
+    2.0 * PI * (1.0 - (1.0 - radius * radius / distance2).sqrt())
 }
 
 /// Where light subpaths leave a sphere from: the cap on the viewpoint's side
 /// of its cuts (`Some`), or the whole sphere; and that region's area.
-fn sphere_region(
-    center: &Point3,
-    radius: f64,
-    cuts: &Cuts,
-    viewpoint: &Point3,
-) -> (Option<Cap>, f64) {
-    match cuts.cap(center, radius, viewpoint) {
-        Some(cap) => (Some(cap), cap.area(radius)),
-        None => (None, 4.0 * PI * radius * radius),
+fn sphere_region(emitter: &Emitter, sphere: &Sphere, viewpoint: &Point3) -> (Option<Cap>, f64) {
+    match emitter.cap(viewpoint) {
+        Some((_, cap)) => (Some(cap), cap.area(sphere.radius)),
+        None => (None, sphere.area()),
     }
 }
 
-/// A point of `shape` for light to leave: `(point, unit normal of the side
-/// emitted into, area density, number of sides)`. `u_side` picks the side of
-/// a two-sided shape.
+/// A point of `emitter` for light to leave: `(point, unit normal of the
+/// side emitted into, area density, number of sides)`. `u_side` picks the
+/// side of a two-sided shape.
 fn emission_point(
-    shape: &EmitterShape,
+    emitter: &Emitter,
     viewpoint: &Point3,
     time: f64,
     u: [f64; 2],
     u_side: f64,
 ) -> Option<(Point3, Vec3, f64, f64)> {
-    match *shape {
-        EmitterShape::Sphere {
-            center,
-            motion,
-            radius,
-            cuts,
-        } => {
-            let center = center + motion * time;
-            let (cap, area) = sphere_region(&center, radius, &cuts, viewpoint);
-            let normal = match cap {
-                Some(cap) => cap.sample(u),
-                None => uniform_sphere(u),
-            };
-            Some((center + normal * radius, normal, 1.0 / area, 1.0))
-        }
-        _ => {
-            let area = shape.area();
-            if !(area > 0.0 && area.is_finite()) {
-                return None;
-            }
-            let (point, normal) = shape.sample_area(time, u);
-            let normal = if u_side < 0.5 { normal } else { -normal };
-            Some((point, normal, 1.0 / area, 2.0))
-        }
+    if let Some(sphere) = emitter.sphere() {
+        let center = sphere.center_at(time);
+        let (cap, area) = sphere_region(emitter, sphere, viewpoint);
+        let normal = match cap {
+            Some(cap) => cap.sample(u),
+            None => uniform_sphere(u),
+        };
+        return Some((center + normal * sphere.radius, normal, 1.0 / area, 1.0));
     }
+    let area = emitter.area();
+    if !(area > 0.0 && area.is_finite()) {
+        return None;
+    }
+    let (point, normal) = emitter.sample_area(time, u)?;
+    let normal = if u_side < 0.5 { normal } else { -normal };
+    Some((point, normal, 1.0 / area, 2.0))
 }

@@ -29,27 +29,18 @@ mod cut_tests;
 mod tests;
 
 use crate::color::Color;
-use crate::geometry::{Shape, Transform};
-use crate::math::{Point3, Vec3, orthonormal_basis, transform_point, transform_vector};
+use crate::geometry::Shape;
+use crate::math::{Point3, Vec3, transform_point};
 use crate::scene::model::{CameraDesc, Scene};
 use crate::world::{Primitive, World, WorldHit};
 
 pub use cut::{CutPlane, Cuts};
 pub use distribution::Distribution;
 pub use emission::EmissionPoint;
-pub use emitter::{EmitterShape, ShapeSample};
+pub use emitter::Emitter;
 
 /// No entry for this primitive.
 const NONE: u32 = u32::MAX;
-
-/// Relative tolerance of the similarity test for transformed spheres.
-const SIMILARITY_TOLERANCE: f64 = 1e-9;
-
-#[derive(Clone, Copy, Debug)]
-pub struct Emitter {
-    pub shape: EmitterShape,
-    pub emission: Color,
-}
 
 /// A sampled light point as seen from a shading point.
 #[derive(Clone, Copy, Debug)]
@@ -75,6 +66,10 @@ pub struct Emitters {
     /// [`Emitters::restrict_light_paths`]): the distribution over those, by
     /// power, and their share of the power. `None`: on every emitter.
     light_path_starts: Option<LightPathStarts>,
+    /// The sum of the entries' weights (emission luminance x reachable
+    /// area): with `pi`, the luminance of the power a photon carries (see
+    /// [`Emitters::sample_photon_origin`]).
+    total_weight: f64,
 }
 
 #[derive(Clone, Debug)]
@@ -103,14 +98,7 @@ impl Emitters {
             // Shapes come one per element (a mesh's triangle k is the k-th),
             // each with the emission of its own material.
             let start = entries.len();
-            let mut element = 0u32;
-            push_shapes(primitive, &planes, &mut |shape| {
-                entries.push(Emitter {
-                    shape,
-                    emission: emission(primitive.material_of(element)),
-                });
-                element += 1;
-            });
+            push_entries(primitive, &planes, &emission, &mut entries);
             if entries.len() > start {
                 first_entry[index] = start as u32;
             }
@@ -125,14 +113,16 @@ impl Emitters {
         let camera = canvas_centre(&scene.camera);
         let weights: Vec<f64> = entries
             .iter()
-            .map(|e| e.emission.luminance().max(0.0) * e.shape.reachable_area(&camera, &planes))
+            .map(|e| e.emission.luminance().max(0.0) * e.reachable_area(&camera, &planes))
             .collect();
         let distribution = Distribution::new(&weights);
+        let total_weight = weights.iter().filter(|w| w.is_finite() && **w > 0.0).sum();
         Emitters {
             entries,
             distribution,
             first_entry,
             light_path_starts: None,
+            total_weight,
         }
     }
 
@@ -186,7 +176,7 @@ impl Emitters {
     ) -> Option<LightSample> {
         let (index, probability) = self.distribution.as_ref()?.sample(select);
         let emitter = &self.entries[index];
-        let sample = emitter.shape.sample(reference, time, u)?;
+        let sample = emitter.sample(reference, time, u)?;
         Some(LightSample {
             point: sample.point,
             direction: sample.direction,
@@ -203,8 +193,8 @@ impl Emitters {
         let Some((index, probability)) = self.entry_of(hit) else {
             return 0.0;
         };
-        let shape = &self.entries[index].shape;
-        probability * shape.pdf(reference, time, &hit.point, &hit.geometric_normal)
+        let emitter = &self.entries[index];
+        probability * emitter.pdf(reference, time, &hit.point, &hit.geometric_normal)
     }
 
     /// The entry of the emitter that `hit` is on and its pick probability;
@@ -243,90 +233,41 @@ fn world_plane(primitive: &Primitive) -> Option<CutPlane> {
     })
 }
 
-/// The world-space sampling shapes of a primitive (none when it cannot be
-/// sampled); `planes` are the world's infinite planes, which may cut spheres.
-fn push_shapes(primitive: &Primitive, planes: &[CutPlane], push: &mut dyn FnMut(EmitterShape)) {
+/// The entries of a primitive (none when it cannot be sampled; one per
+/// triangle of a mesh, each with its own material's emission); `planes`
+/// are the world's infinite planes, which may cut spheres.
+fn push_entries(
+    primitive: &Primitive,
+    planes: &[CutPlane],
+    emission: &dyn Fn(usize) -> Color,
+    entries: &mut Vec<Emitter>,
+) {
     let transform = primitive.transform.as_deref();
+    let Shape::Mesh { mesh, .. } = &primitive.shape else {
+        let emission = emission(primitive.material_of(0));
+        entries.extend(Emitter::new(&primitive.shape, transform, planes, emission));
+        return;
+    };
+    // One entry per triangle, invalid ones included (with zero area), so
+    // that triangle k of the mesh is entry first + k.
     let point = |p: &Point3| match transform {
         Some(t) => transform_point(&t.matrix, p),
         None => *p,
     };
-    let vector = |v: &Vec3| match transform {
-        Some(t) => transform_vector(&t.matrix, v),
-        None => *v,
-    };
-    match &primitive.shape {
-        Shape::Sphere(sphere) => {
-            let scale = match transform {
-                None => 1.0,
-                Some(t) => match similarity_scale(t) {
-                    Some(scale) => scale,
-                    None => return,
-                },
-            };
-            let center = point(&sphere.center);
-            let motion = vector(&sphere.motion);
-            let radius = sphere.radius * scale;
-            let cuts = if motion == Vec3::zeros() {
-                Cuts::new(&center, radius, planes)
-            } else {
-                Cuts::NONE
-            };
-            push(EmitterShape::Sphere {
-                center,
-                motion,
-                radius,
-                cuts,
-            });
-        }
-        Shape::Triangle(triangle) => push(EmitterShape::Triangle {
-            vertices: triangle.vertices.map(|p| point(&p)),
-        }),
-        Shape::Rectangle(rectangle) => push(EmitterShape::Parallelogram {
-            origin: point(&rectangle.origin),
-            edge_u: vector(&rectangle.edge_u),
-            edge_v: vector(&rectangle.edge_v),
-        }),
-        Shape::Disk(disk) => {
-            let (e1, e2) = orthonormal_basis(&disk.normal);
-            push(EmitterShape::Ellipse {
-                center: point(&disk.center),
-                axis_u: vector(&(e1 * disk.radius)),
-                axis_v: vector(&(e2 * disk.radius)),
-            });
-        }
-        Shape::Mesh { mesh, .. } => {
-            // One entry per triangle, invalid ones included (with zero area),
-            // so that triangle k of the mesh is entry first + k.
-            let positions = &mesh.data.positions;
-            for triangle in &mesh.data.triangles {
-                let vertex = |i: u32| positions.get(i as usize).map(point);
-                let vertices = match (
-                    vertex(triangle[0]),
-                    vertex(triangle[1]),
-                    vertex(triangle[2]),
-                ) {
-                    (Some(a), Some(b), Some(c)) => [a, b, c],
-                    _ => [Point3::zeros(); 3],
-                };
-                push(EmitterShape::Triangle { vertices });
-            }
-        }
-        Shape::Plane(_) | Shape::Revolution(_) => {}
+    let positions = &mesh.data.positions;
+    for (element, triangle) in mesh.data.triangles.iter().enumerate() {
+        let vertex = |i: u32| positions.get(i as usize).map(point);
+        let vertices = match (
+            vertex(triangle[0]),
+            vertex(triangle[1]),
+            vertex(triangle[2]),
+        ) {
+            (Some(a), Some(b), Some(c)) => [a, b, c],
+            _ => [Point3::zeros(); 3],
+        };
+        let emission = emission(primitive.material_of(element as u32));
+        entries.push(Emitter::triangle(vertices, emission));
     }
-}
-
-/// `s` when the linear part of `transform` is `s` times a rotation (or
-/// reflection), else `None`.
-fn similarity_scale(transform: &Transform) -> Option<f64> {
-    let linear = transform.matrix.fixed_view::<3, 3>(0, 0).into_owned();
-    let gram = linear.transpose() * linear;
-    let scale_squared = gram.trace() / 3.0;
-    if !(scale_squared > 0.0 && scale_squared.is_finite()) {
-        return None;
-    }
-    let off = (gram - nalgebra::Matrix3::identity() * scale_squared).amax();
-    (off <= SIMILARITY_TOLERANCE * scale_squared).then(|| scale_squared.sqrt())
 }
 
 /// Where the camera's rays start on its axis: the centre of its canvas

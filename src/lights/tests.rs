@@ -4,19 +4,21 @@
 use std::f64::consts::PI;
 use std::sync::Arc;
 
-use super::emitter::uniform_sphere;
 use super::*;
 use crate::color::Color;
+use crate::geometry::Transform;
+use crate::geometry::surface_samples::uniform_sphere;
 use crate::geometry::{Disk, Rectangle, Shape, Sphere, Triangle};
 use crate::look::Look;
 use crate::math::Ray;
+use crate::math::Vec3;
 use crate::render_scene::{RenderScene, SceneSettings};
 use crate::rng::Rng;
 use crate::scene::model::{Object, Scene};
 
 /// `E[1 / pdf]` over light samples (the solid angle the sampler covers),
 /// checking on the way that `pdf` agrees with the density of `sample`.
-fn sampled_solid_angle(shape: &EmitterShape, reference: &Point3, n: usize) -> f64 {
+fn sampled_solid_angle(shape: &Shape, reference: &Point3, n: usize) -> f64 {
     let mut rng = Rng::new(3, 4);
     let mut sum = 0.0;
     for _ in 0..n {
@@ -26,8 +28,13 @@ fn sampled_solid_angle(shape: &EmitterShape, reference: &Point3, n: usize) -> f6
         assert!((s.direction.norm() - 1.0).abs() < 1e-12);
         assert!((reference + s.direction * s.distance - s.point).norm() < 1e-9);
         let normal = match shape {
-            EmitterShape::Sphere { center, .. } => (s.point - center).normalize(),
-            _ => shape.sample_area(0.0, [0.5, 0.5]).1,
+            Shape::Sphere(sphere) => (s.point - sphere.center).normalize(),
+            _ => {
+                shape
+                    .sample_area(0.0, [0.5, 0.5])
+                    .expect("a sampled shape")
+                    .1
+            }
         };
         let pdf = shape.pdf(reference, 0.0, &s.point, &normal);
         assert!((pdf - s.pdf).abs() <= 1e-9 * s.pdf, "{pdf} vs {}", s.pdf);
@@ -63,59 +70,71 @@ fn densities_are_consistent_and_cover_the_visible_solid_angle() {
         Vec3::new(0.3, 0.2, -1.0),
     );
     let normal = Vec3::new(0.3, 0.2, 1.0).normalize();
-    let (e1, e2) = orthonormal_basis(&normal);
     let center = Point3::new(0.0, 0.0, -1.0);
     let cases = [
-        (
-            EmitterShape::Triangle {
-                vertices: [a, b, c],
-            },
-            Shape::Triangle(Triangle::new([a, b, c])),
-        ),
-        (
-            EmitterShape::Parallelogram {
-                origin,
-                edge_u,
-                edge_v,
-            },
-            Shape::Rectangle(Rectangle::new(origin, edge_u, edge_v).unwrap()),
-        ),
-        (
-            EmitterShape::Ellipse {
-                center,
-                axis_u: e1 * 0.6,
-                axis_v: e2 * 0.6,
-            },
-            Shape::Disk(Disk::new(center, normal, 0.6).unwrap()),
-        ),
-        (
-            EmitterShape::Sphere {
-                center,
-                motion: Vec3::zeros(),
-                radius: 0.5,
-                cuts: Cuts::NONE,
-            },
-            Shape::Sphere(Sphere::new(center, 0.5, Vec3::zeros())),
-        ),
+        Shape::Triangle(Triangle::new([a, b, c])),
+        Shape::Rectangle(Rectangle::new(origin, edge_u, edge_v).unwrap()),
+        Shape::Disk(Disk::new(center, normal, 0.6).unwrap()),
+        Shape::Sphere(Sphere::new(center, 0.5, Vec3::zeros())),
     ];
-    for (emitter, shape) in cases {
-        let sampled = sampled_solid_angle(&emitter, &reference, 100_000);
+    for shape in cases {
+        let sampled = sampled_solid_angle(&shape, &reference, 100_000);
         let hit = hit_solid_angle(&shape, &reference, 400_000);
         assert!(
             (sampled - hit).abs() < 0.03 * hit,
-            "{emitter:?}: sampled {sampled} vs hit {hit}"
+            "{shape:?}: sampled {sampled} vs hit {hit}"
         );
     }
 }
 
+/// A disk under a non-uniform scale (an ellipse) samples in its own space
+/// through its transform: its densities agree with hit counting through
+/// the same transform, and its area is the ellipse's.
+#[test]
+fn a_transformed_disk_samples_through_its_transform() {
+    let matrix = crate::math::Matrix::new(
+        2.0, 0.3, 0.0, 0.1, //
+        0.0, 0.5, 0.2, -0.2, //
+        0.1, 0.0, 1.0, -1.5, //
+        0.0, 0.0, 0.0, 1.0,
+    );
+    let transform = Transform::new(matrix, matrix.try_inverse().unwrap());
+    let disk = Shape::Disk(Disk::new(Point3::zeros(), Vec3::new(0.2, 0.1, 1.0), 0.5).unwrap());
+    let emitter = Emitter::new(&disk, Some(&transform), &[], Color::WHITE).unwrap();
+    let reference = Point3::new(0.2, -0.1, 0.5);
+    let mut rng = Rng::new(3, 4);
+    let n = 100_000;
+    let mut sampled = 0.0;
+    for _ in 0..n {
+        let u = [rng.next_f64(), rng.next_f64()];
+        let Some(s) = emitter.sample(&reference, 0.0, u) else {
+            continue;
+        };
+        let (_, normal) = emitter.sample_area(0.0, u).unwrap();
+        let pdf = emitter.pdf(&reference, 0.0, &s.point, &normal);
+        assert!((pdf - s.pdf).abs() <= 1e-9 * s.pdf, "{pdf} vs {}", s.pdf);
+        sampled += 1.0 / s.pdf;
+    }
+    sampled /= n as f64;
+    let mut rng = Rng::new(5, 6);
+    let m = 400_000;
+    let hits = (0..m)
+        .filter(|_| {
+            let d = uniform_sphere([rng.next_f64(), rng.next_f64()]);
+            let ray = transform.ray_to_object(&Ray::new(reference, d, 0.0));
+            disk.intersect(&ray, 0.0, f64::INFINITY).is_some()
+        })
+        .count();
+    let hit = 4.0 * PI * hits as f64 / m as f64;
+    assert!(
+        (sampled - hit).abs() < 0.03 * hit,
+        "sampled {sampled} vs hit {hit}"
+    );
+}
+
 #[test]
 fn sphere_seen_from_inside_or_its_surface_covers_all_directions() {
-    let sphere = EmitterShape::Sphere {
-        center: Point3::zeros(),
-        motion: Vec3::zeros(),
-        radius: 2.0,
-        cuts: Cuts::NONE,
-    };
+    let sphere = Shape::Sphere(Sphere::new(Point3::zeros(), 2.0, Vec3::zeros()));
     for reference in [Point3::new(0.3, -1.0, 0.5), Point3::new(0.0, 2.0, 0.0)] {
         let omega = sampled_solid_angle(&sphere, &reference, 200_000);
         // From inside every direction sees the sphere; from a point on it,
@@ -127,12 +146,7 @@ fn sphere_seen_from_inside_or_its_surface_covers_all_directions() {
 
 #[test]
 fn tiny_distant_sphere_has_the_small_cone_density() {
-    let sphere = EmitterShape::Sphere {
-        center: Point3::new(0.0, 0.0, 1e4),
-        motion: Vec3::zeros(),
-        radius: 1e-3,
-        cuts: Cuts::NONE,
-    };
+    let sphere = Shape::Sphere(Sphere::new(Point3::new(0.0, 0.0, 1e4), 1e-3, Vec3::zeros()));
     let s = sphere.sample(&Point3::zeros(), 0.0, [0.3, 0.7]).unwrap();
     let want = 1.0 / (PI * 1e-14); // 1 / (pi (r/d)^2) in the small-angle limit
     assert!((s.pdf - want).abs() < 1e-6 * want);

@@ -19,10 +19,18 @@ pub enum Integrator {
     /// and directional light, `kd max(0, n.l) + ks max(0, v.r)^shininess`,
     /// no shadows, nothing else (the PA1 look's).
     RayCast,
+    /// Stochastic progressive photon mapping (see `integrator::sppm`):
+    /// passes of visible points and photons, rendered by `sppm::render`.
+    Sppm,
 }
 
 impl Integrator {
-    pub const ALL: [Integrator; 3] = [Integrator::Path, Integrator::Original, Integrator::RayCast];
+    pub const ALL: [Integrator; 4] = [
+        Integrator::Path,
+        Integrator::Original,
+        Integrator::RayCast,
+        Integrator::Sppm,
+    ];
 
     /// The command-line name.
     pub fn name(self) -> &'static str {
@@ -30,6 +38,7 @@ impl Integrator {
             Integrator::Original => "original",
             Integrator::Path => "path",
             Integrator::RayCast => "raycast",
+            Integrator::Sppm => "sppm",
         }
     }
 

@@ -1,9 +1,9 @@
 //! Looks: the conventions by which a renderer turns a scene into pixels,
 //! as data, one row per renderer (`../shared/docs/looks.md` has the facts
 //! each row comes from, with their source lines). A look is chosen for each
-//! scene by its dialect and the fingerprints that tell renderers of one
-//! dialect apart ([`Look::detect`]), or by `--look NAME`; the render summary
-//! and `check` say which and why.
+//! scene by the fingerprints its renderer's files carry ([`detect`], one
+//! table row per renderer), or by `--look NAME`; the render summary and
+//! `check` say which and the fingerprint found.
 //!
 //! | look | renderer | estimator | depth | a ray that misses | PA1 lights | Phong lobes | glass |
 //! |---|---|---|---|---|---|---|---|
@@ -23,9 +23,10 @@
 use crate::bsdf::DielectricFresnel;
 use crate::bsdf::build::LookLobes;
 use crate::geometry::SphereTest;
-use crate::scene::model::{CameraDesc, Dialect, FovAxis, LensShape, Scene};
+use crate::scene::model::{CameraDesc, FovAxis, LensShape, Scene};
 use crate::world::ShapeRules;
 
+pub mod detect;
 mod integrator;
 mod mist;
 pub use integrator::Integrator;
@@ -310,32 +311,10 @@ impl Look {
         Look::ALL.into_iter().find(|look| look.name == name)
     }
 
-    /// The look of the renderer that most likely wrote `scene`, and why.
+    /// The look of the renderer that most likely wrote `scene`, and why
+    /// (see [`detect`]).
     pub fn detect(scene: &Scene) -> (Look, String) {
-        let why = |what: &str| format!("{} dialect{what}", scene.dialect.name());
-        match scene.dialect {
-            Dialect::Pa1 => (Look::PA1, why(": the course framework's ray caster")),
-            Dialect::Cambrian => (Look::CAMBRIAN, why("")),
-            Dialect::TypeVector => {
-                let has = |word: &str| scene.fingerprints.iter().any(|w| w == word);
-                if has("DepthCamera") || has("glossy") || has("speed") {
-                    (Look::OSB, why(" with osb's DepthCamera, glossy or speed"))
-                } else if has("DiskLights") || has("focal") {
-                    (Look::YLC, why(" with ylc's DiskLights or focal"))
-                } else if has("bump") {
-                    // yuzc19's renderer has no bump maps; W-Solaris's has.
-                    (Look::WSO, why(" with a bump map: W-Solaris's path tracer"))
-                } else {
-                    // W-Solaris's and yuzc19's files are otherwise word for
-                    // word the same (vase.txt is scene09_norm.txt at another
-                    // size); yuzc19's conventions are the default, --look
-                    // wso gives W-Solaris's (docs/looks-alike.md).
-                    (Look::YZC, why(": the family's path tracer (yuzc19's)"))
-                }
-            }
-            Dialect::Cyy => (Look::CYY, why("")),
-            _ => (Look::ORIGINAL, why(": no look of its own yet")),
-        }
+        detect::detect(scene)
     }
 }
 

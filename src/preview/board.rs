@@ -3,12 +3,16 @@
 //! number that rises on each post so that event streams wait for the next.
 //!
 //! Memory is bounded whatever the number of readers: the board holds one
-//! frame, and a reader holds the frame it is sending (an `Arc`), never a
-//! queue of them.
+//! image and its frame, and a reader holds the one it is sending (an
+//! `Arc`), never a queue of them.
 
+use std::path::PathBuf;
 use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use std::time::Duration;
 
+use crate::image_io::Image;
+
+use super::frame;
 use super::status::Status;
 
 /// What was last posted.
@@ -18,6 +22,8 @@ pub struct Posted {
     pub generation: u64,
     /// The film as [`super::frame`] encodes it (none before the first pass).
     pub frame: Option<Arc<Vec<u8>>>,
+    /// The same film as an image, for the save button.
+    pub image: Option<Arc<Image>>,
     pub status: Status,
 }
 
@@ -26,6 +32,8 @@ pub struct Posted {
 pub struct Board {
     posted: Mutex<Posted>,
     changed: Condvar,
+    /// The files the scene reads, which a save may not replace.
+    inputs: Mutex<Vec<PathBuf>>,
 }
 
 impl Board {
@@ -34,14 +42,19 @@ impl Board {
         self.posted.lock().unwrap_or_else(|e| e.into_inner())
     }
 
-    /// Replaces the status, and the frame when one is given, and wakes
-    /// every reader waiting for a change.
-    pub fn post(&self, status: Status, frame: Option<Vec<u8>>) {
+    /// Replaces the status, and the image (and its frame, numbered
+    /// `status.frame`) when one is given, and wakes every reader waiting
+    /// for a change.
+    pub fn post(&self, status: Status, image: Option<Image>) {
+        let frame = image
+            .as_ref()
+            .map(|i| Arc::new(frame::encode(i, status.frame)));
         let mut posted = self.lock();
         posted.generation += 1;
         posted.status = status;
-        if let Some(frame) = frame {
-            posted.frame = Some(Arc::new(frame));
+        if let Some(image) = image {
+            posted.image = Some(Arc::new(image));
+            posted.frame = frame;
         }
         drop(posted);
         self.changed.notify_all();
@@ -55,6 +68,18 @@ impl Board {
         change(&mut posted.status);
         drop(posted);
         self.changed.notify_all();
+    }
+
+    /// The files the scene reads now.
+    pub fn set_inputs(&self, files: &[PathBuf]) {
+        *self.inputs.lock().unwrap_or_else(|e| e.into_inner()) = files.to_vec();
+    }
+
+    pub fn inputs(&self) -> Vec<PathBuf> {
+        self.inputs
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .clone()
     }
 
     /// What is posted now.
@@ -85,14 +110,26 @@ mod tests {
             let board = board.clone();
             std::thread::spawn(move || board.after(0, Duration::from_secs(10)))
         };
-        board.post(Status::default(), Some(vec![1]));
+        let image = |value: f64| Image {
+            width: 1,
+            height: 1,
+            pixels: vec![crate::color::Color::new(value, value, value)],
+        };
+        board.post(Status::default(), Some(image(1.0)));
         let got = reader.join().expect("reader").expect("a post");
         assert!(got.generation >= 1);
-        board.post(Status::default(), Some(vec![2]));
+        board.post(Status::default(), Some(image(2.0)));
         board.update(|s| s.spp = 3.0);
         let now = board.now();
         assert_eq!(now.generation, 3);
-        assert_eq!(now.frame.as_deref().map(|f| f.as_slice()), Some(&[2u8][..]));
+        assert_eq!(now.image.as_deref(), Some(&image(2.0)));
+        let frame = now.frame.expect("a frame");
+        assert_eq!(frame.len(), frame::HEADER_BYTES + 6);
+        // 2.0 as a half float.
+        assert_eq!(
+            frame[frame::HEADER_BYTES..frame::HEADER_BYTES + 2],
+            [0x00, 0x40]
+        );
         assert_eq!(now.status.spp, 3.0);
         assert!(board.after(3, Duration::from_millis(10)).is_none());
     }

@@ -17,6 +17,8 @@ pub struct Request {
     pub method: String,
     /// The request target without its query (`/film?frame=3` is `/film`).
     pub path: String,
+    /// What follows the `?` of the target (empty without one).
+    pub query: String,
     pub host: Option<String>,
     pub origin: Option<String>,
     /// Whether the request announced a body (refused: no route takes one).
@@ -69,11 +71,13 @@ pub fn parse(bytes: &[u8]) -> Result<Option<Request>, Refusal> {
             .map(|h| String::from_utf8_lossy(h.value).trim().to_string())
     };
     let target = request.path.unwrap_or("");
-    let path = target.split(['?', '#']).next().unwrap_or("").to_string();
+    let target = target.split('#').next().unwrap_or("");
+    let (path, query) = target.split_once('?').unwrap_or((target, ""));
     let length = header("content-length").filter(|l| l != "0");
     Ok(Some(Request {
         method: request.method.unwrap_or("").to_string(),
-        path,
+        path: path.to_string(),
+        query: query.to_string(),
         host: header("host"),
         origin: header("origin"),
         has_body: length.is_some() || header("transfer-encoding").is_some(),
@@ -146,6 +150,7 @@ mod tests {
             .expect("complete");
         assert_eq!(request.method, "GET");
         assert_eq!(request.path, "/film");
+        assert_eq!(request.query, "frame=3");
         assert_eq!(request.host.as_deref(), Some("127.0.0.1:8000"));
         assert!(!request.has_body);
     }

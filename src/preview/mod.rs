@@ -14,5 +14,7 @@ pub mod frame;
 pub mod http;
 pub mod passes;
 pub mod routes;
+pub mod save;
 pub mod server;
 pub mod status;
+pub mod watch;

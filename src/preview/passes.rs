@@ -10,7 +10,6 @@ use crate::film::Film;
 use crate::render::{Renderer, Samples, Stop};
 
 use super::board::Board;
-use super::frame;
 use super::status::Status;
 
 /// The time one pass aims for.
@@ -30,13 +29,14 @@ pub enum Ended {
 
 /// Renders passes into `film` until it has `spp` samples per pixel (the
 /// renderer's own sample count is not used) or `stop` returns true,
-/// posting the film and `status` (with the progress filled in) on `board`.
+/// posting the film and `status` (with the progress filled in, and the
+/// frame number one more each time) on `board`.
 pub fn render_passes(
     renderer: &Renderer,
     film: &mut Film,
     spp: u32,
     board: &Board,
-    mut status: Status,
+    status: &mut Status,
     stop: &dyn Fn() -> bool,
 ) -> Result<Ended, String> {
     let started = Instant::now();
@@ -65,10 +65,7 @@ pub fn render_passes(
             status.samples_per_second = samples as f64 / seconds.max(1e-9);
             status.frame += 1;
             status.done = next == spp;
-            board.post(
-                status.clone(),
-                Some(frame::encode(&film.to_image(), status.frame)),
-            );
+            board.post(status.clone(), Some(film.to_image()));
             last_post = Some(Instant::now());
         }
     }

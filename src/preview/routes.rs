@@ -15,6 +15,8 @@ pub enum Route {
     Film,
     /// The status as JSON, once.
     Status,
+    /// POST: write the image to the output file.
+    Save,
 }
 
 impl Route {
@@ -27,9 +29,26 @@ impl Route {
             "/events" => Route::Events,
             "/film" => Route::Film,
             "/status" => Route::Status,
+            "/save" => Route::Save,
             _ => return None,
         })
     }
+
+    /// The one method the route answers.
+    pub fn method(self) -> &'static str {
+        match self {
+            Route::Save => "POST",
+            _ => "GET",
+        }
+    }
+}
+
+/// Whether a request's `Origin` is this server's page: what a page of
+/// another site cannot send, so it cannot make this server write a file.
+pub fn origin_allowed(origin: Option<&str>, port: u16) -> bool {
+    origin
+        .and_then(|o| o.strip_prefix("http://"))
+        .is_some_and(|host| host_allowed(Some(host), port))
 }
 
 /// Whether a request's `Host` names this server: the loopback address or
@@ -89,5 +108,16 @@ mod tests {
             assert!(!host_allowed(Some(host), 8123), "{host}");
         }
         assert!(!host_allowed(None, 8123));
+        assert!(origin_allowed(Some("http://127.0.0.1:8123"), 8123));
+        assert!(origin_allowed(Some("http://localhost:8123"), 8123));
+        for origin in [
+            "https://evil.example",
+            "null",
+            "http://127.0.0.1:8124",
+            "127.0.0.1:8123",
+        ] {
+            assert!(!origin_allowed(Some(origin), 8123), "{origin}");
+        }
+        assert!(!origin_allowed(None, 8123));
     }
 }

@@ -4,6 +4,7 @@
 //! [`Board`].
 
 use std::net::{Ipv4Addr, SocketAddr, TcpListener, TcpStream};
+use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
@@ -11,6 +12,7 @@ use std::time::Duration;
 use super::board::Board;
 use super::http::{self, Refusal, Request};
 use super::routes::{self, Route};
+use super::save;
 
 /// Connections served at once (each event stream holds one).
 pub const MAX_CONNECTIONS: usize = 32;
@@ -24,20 +26,27 @@ const WRITE_TIMEOUT: Duration = Duration::from_secs(10);
 /// How often an idle event stream says it is still there.
 const KEEP_ALIVE: Duration = Duration::from_secs(5);
 
-/// Starts serving `board` on 127.0.0.1:`port` (0: a free port) and returns
-/// the address it listens on. The server runs until the process ends.
-pub fn start(port: u16, board: Arc<Board>) -> Result<SocketAddr, String> {
+/// What the server serves: the board, and where the save button writes.
+pub struct Served {
+    pub board: Arc<Board>,
+    pub output: PathBuf,
+}
+
+/// Starts serving on 127.0.0.1:`port` (0: a free port) and returns the
+/// address it listens on. The server runs until the process ends.
+pub fn start(port: u16, served: Served) -> Result<SocketAddr, String> {
     let listener = TcpListener::bind((Ipv4Addr::LOCALHOST, port))
         .map_err(|e| format!("cannot listen on 127.0.0.1:{port}: {e}"))?;
     let address = listener
         .local_addr()
         .map_err(|e| format!("cannot read the listening address: {e}"))?;
     let active = Arc::new(AtomicUsize::new(0));
+    let served = Arc::new(served);
     std::thread::Builder::new()
         .name("preview-accept".to_string())
         .spawn(move || {
             for stream in listener.incoming().flatten() {
-                admit(stream, &board, &active, address.port());
+                admit(stream, &served, &active, address.port());
             }
         })
         .map_err(|e| format!("cannot start the server thread: {e}"))?;
@@ -46,7 +55,7 @@ pub fn start(port: u16, board: Arc<Board>) -> Result<SocketAddr, String> {
 
 /// Serves `stream` on a thread of its own, or refuses it when
 /// [`MAX_CONNECTIONS`] are being served.
-fn admit(mut stream: TcpStream, board: &Arc<Board>, active: &Arc<AtomicUsize>, port: u16) {
+fn admit(mut stream: TcpStream, served: &Arc<Served>, active: &Arc<AtomicUsize>, port: u16) {
     let _ = stream.set_read_timeout(Some(READ_TIMEOUT));
     let _ = stream.set_write_timeout(Some(WRITE_TIMEOUT));
     if active.fetch_add(1, Ordering::SeqCst) >= MAX_CONNECTIONS {
@@ -58,12 +67,12 @@ fn admit(mut stream: TcpStream, board: &Arc<Board>, active: &Arc<AtomicUsize>, p
         );
         return;
     }
-    let (board, counted) = (board.clone(), active.clone());
+    let (served, counted) = (served.clone(), active.clone());
     let spawned = std::thread::Builder::new()
         .name("preview-connection".to_string())
         .stack_size(256 * 1024)
         .spawn(move || {
-            serve(stream, &board, port);
+            serve(stream, &served, port);
             counted.fetch_sub(1, Ordering::SeqCst);
         });
     if spawned.is_err() {
@@ -72,7 +81,7 @@ fn admit(mut stream: TcpStream, board: &Arc<Board>, active: &Arc<AtomicUsize>, p
 }
 
 /// Reads one request and answers it (write errors end the connection).
-fn serve(mut stream: TcpStream, board: &Board, port: u16) {
+fn serve(mut stream: TcpStream, served: &Served, port: u16) {
     let request = match http::read_request(&mut stream) {
         Ok(request) => request,
         Err(Refusal::Malformed) => {
@@ -81,15 +90,16 @@ fn serve(mut stream: TcpStream, board: &Board, port: u16) {
         }
         Err(Refusal::Incomplete) => return,
     };
-    let _ = answer(&mut stream, &request, board, port);
+    let _ = answer(&mut stream, &request, served, port);
 }
 
 fn answer(
     stream: &mut TcpStream,
     request: &Request,
-    board: &Board,
+    served: &Served,
     port: u16,
 ) -> std::io::Result<()> {
+    let board = &served.board;
     if !routes::host_allowed(request.host.as_deref(), port) {
         return http::refuse(
             stream,
@@ -103,8 +113,8 @@ fn answer(
     let Some(route) = Route::of(&request.path) else {
         return http::refuse(stream, "404 Not Found", "no such page");
     };
-    if request.method != "GET" {
-        return http::refuse(stream, "405 Method Not Allowed", "only GET");
+    if request.method != route.method() {
+        return http::refuse(stream, "405 Method Not Allowed", route.method());
     }
     match route {
         Route::Page => http::respond(
@@ -134,6 +144,41 @@ fn answer(
             None => http::refuse(stream, "503 Service Unavailable", "no pass rendered yet"),
         },
         Route::Events => stream_events(stream, board),
+        Route::Save => save_image(stream, request, served, port),
+    }
+}
+
+/// Writes the image on the board to the output file, for the page only.
+fn save_image(
+    stream: &mut TcpStream,
+    request: &Request,
+    served: &Served,
+    port: u16,
+) -> std::io::Result<()> {
+    if !routes::origin_allowed(request.origin.as_deref(), port) {
+        return http::refuse(
+            stream,
+            "403 Forbidden",
+            "saving is for this server's page only",
+        );
+    }
+    let encoding = match save::encoding_of(&request.query) {
+        Ok(encoding) => encoding,
+        Err(why) => return http::refuse(stream, "400 Bad Request", &why),
+    };
+    let Some(image) = served.board.now().image else {
+        return http::refuse(stream, "503 Service Unavailable", "no pass rendered yet");
+    };
+    let output = &served.output;
+    match save::save(&image, output, &encoding, &served.board.inputs()) {
+        Ok(()) => {
+            let json = format!(
+                "{{\"saved\": {}}}",
+                super::status::string(&output.display().to_string())
+            );
+            http::respond(stream, "200 OK", "application/json", json.as_bytes())
+        }
+        Err(why) => http::refuse(stream, "500 Internal Server Error", &why),
     }
 }
 

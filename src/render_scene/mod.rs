@@ -29,14 +29,17 @@ use crate::camera::{Camera, MIN_LENS_RADIUS};
 use crate::color::Color;
 use crate::lights::Emitters;
 use crate::look::{
-    DispersionSensor, Integrator, Look, Miss, PointLights, TextureFrames, TextureRows,
+    DispersionSensor, Integrator, Look, Miss, PixelSampling, PointLights, TextureFrames,
+    TextureRows,
 };
 use crate::math::{Aabb, Point3, Ray};
 use crate::medium::Medium;
+use crate::sampler::Sampler;
 use crate::scene::build::dispersion::apply_channels;
 use crate::scene::model::{Light, Object, Scene};
 use crate::shading::{RenderMaterial, Shading};
 use crate::spectral::Dispersion;
+use crate::subpixel::film_position;
 use crate::world::{World, WorldHit};
 
 /// The settings of a render that decide its render-time scene.
@@ -328,6 +331,28 @@ impl RenderScene {
     /// Bounds of the bounded shapes.
     pub fn bounds(&self) -> Aabb {
         self.world.bounds()
+    }
+
+    /// A camera ray through pixel (`x`, `y`), `y` from the bottom, and its
+    /// lens sample: a position under the look's pixel filter (the 2x2
+    /// sub-pixels' tent, see `subpixel`, or the centre), lens and time only
+    /// where the scene needs them, drawn from `sampler` in that order.
+    pub fn camera_ray(&self, x: usize, y: usize, sampler: &mut Sampler) -> (Ray, [f64; 2]) {
+        let (film_x, film_y) = match self.look().pixels {
+            PixelSampling::Tent => film_position(x, y, sampler.next_2d()),
+            PixelSampling::Centre => (x as f64 + 0.5, y as f64 + 0.5),
+        };
+        let lens = if self.plan.lens {
+            sampler.next_2d()
+        } else {
+            [0.5, 0.5]
+        };
+        let time = if self.plan.time {
+            sampler.next_f64()
+        } else {
+            0.0
+        };
+        (self.camera.ray(film_x, film_y, lens, time), lens)
     }
 }
 

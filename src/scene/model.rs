@@ -33,9 +33,9 @@ pub struct Scene {
     /// their own (a top-level `Medium` block, or the camera's `mist`).
     pub medium: Option<Medium>,
     pub dialect: Dialect,
-    /// Words of the file that tell renderers of one dialect apart (see
-    /// `look::Look::detect`).
-    pub fingerprints: Vec<String>,
+    /// The file's distinct field and block names, sorted (what look
+    /// detection reads, see `look::detect`).
+    pub words: Vec<String>,
     /// Non-fatal problems found while reading (unknown fields, count mismatches...).
     pub warnings: Vec<Diagnostic>,
     /// What reading the file cost (for `--stats`).
@@ -43,6 +43,13 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// Whether the file uses `word` as a field or block name.
+    pub fn has_word(&self, word: &str) -> bool {
+        self.words
+            .binary_search_by(|kept| kept.as_str().cmp(word))
+            .is_ok()
+    }
+
     /// Whether light crosses a participating medium anywhere in the scene.
     pub fn has_media(&self) -> bool {
         self.medium.is_some() || self.materials.iter().any(|m| m.interior.is_some())
@@ -78,7 +85,7 @@ impl Scene {
             root,
             medium: None,
             dialect: Dialect::Canonical,
-            fingerprints: Vec::new(),
+            words: Vec::new(),
             warnings: Vec::new(),
             load: LoadStats::default(),
         }

@@ -17,7 +17,10 @@ use std::path::{Path, PathBuf};
 
 use pathtracer::color::Color;
 use pathtracer::image_io::Image;
+use pathtracer::integrator::Integrator;
+use pathtracer::integrator::sppm::PhotonSettings;
 use pathtracer::look::Look;
+use pathtracer::photon_render;
 use pathtracer::render::{RenderSettings, RenderStats, render};
 use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::scene::model::{Material, Object, Scene};
@@ -149,7 +152,20 @@ pub fn render_scene(
     scene: &Scene,
     settings: &RenderSettings,
 ) -> Result<(Image, RenderStats), String> {
-    render(&ready(scene.clone(), settings), settings)
+    render_ready(&ready(scene.clone(), settings), settings)
+}
+
+/// A render-time scene rendered with `settings`, by any integrator
+/// (photon mapping through its own driver, with its default parameters).
+pub fn render_ready(
+    scene: &RenderScene,
+    settings: &RenderSettings,
+) -> Result<(Image, RenderStats), String> {
+    if settings.integrator == Integrator::Sppm {
+        photon_render::render(scene, settings, PhotonSettings::default(), false)
+    } else {
+        render(scene, settings)
+    }
 }
 
 /// Statistic `f` of independent runs (image mean or one pixel): its mean

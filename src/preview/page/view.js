@@ -156,6 +156,21 @@ $("zoom").addEventListener("click", () => {
   $("zoom").textContent = fit ? "1:1" : "fit";
 });
 canvas.addEventListener("mousemove", showPixel);
+$("save").addEventListener("click", async () => {
+  const query = new URLSearchParams({
+    exposure: $("exposure").value,
+    tonemap: $("tonemap").value,
+    gamma: $("gamma").value,
+  });
+  $("saved").textContent = "saving…";
+  try {
+    const response = await fetch(`/save?${query}`, { method: "POST" });
+    const text = await response.text();
+    $("saved").textContent = response.ok ? `saved ${JSON.parse(text).saved}` : text;
+  } catch (error) {
+    $("saved").textContent = `not saved: ${error}`;
+  }
+});
 
 const events = new EventSource("/events");
 events.onmessage = (event) => showStatus(JSON.parse(event.data));

@@ -1,6 +1,8 @@
 //! Which coursework dialect a file is written in, by the fingerprints of scene-format.md §6.6.
 
-use std::collections::HashSet;
+use std::collections::{BTreeSet, HashSet};
+
+use crate::limits::MAX_KEPT_WORDS;
 
 use crate::scene::ast::{Document, ItemKind};
 use crate::scene::model::Dialect;
@@ -55,38 +57,35 @@ const CYF: [&str; 6] = [
     "aperture",
 ];
 
-/// Words that tell renderers of one dialect apart (see `look::Look::detect`).
-const LOOK_FINGERPRINTS: [&str; 6] = [
-    "DepthCamera",
-    "glossy",
-    "speed",
-    "DiskLights",
-    "focal",
-    "bump",
-];
-
-/// The words of [`LOOK_FINGERPRINTS`] that the file uses.
-pub fn look_fingerprints(document: &Document) -> Vec<String> {
-    let mut found = Vec::new();
+/// The distinct identifier-like words of a file (field and block names),
+/// sorted, at most [`MAX_KEPT_WORDS`] of them: what look detection reads
+/// (`look::detect`). Numbers, paths and longer words are not kept.
+pub fn distinct_words(document: &Document) -> Vec<String> {
+    let mut found: BTreeSet<String> = BTreeSet::new();
     document.for_each_word(&mut |word, _, _| {
-        if LOOK_FINGERPRINTS.contains(&word) && !found.iter().any(|f: &String| f == word) {
-            found.push(word.to_string());
+        let identifier = word.len() <= 32
+            && word.starts_with(|c: char| c.is_ascii_alphabetic())
+            && word.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if identifier && found.len() < MAX_KEPT_WORDS && !found.contains(word) {
+            found.insert(word.to_string());
         }
     });
-    found
+    found.into_iter().collect()
 }
 
 /// Detects the dialect of a parsed file.
 pub fn detect_dialect(document: &Document) -> Dialect {
     let mut words: HashSet<&str> = HashSet::new();
     let mut type_vector = false;
+    let mut color_material = false;
     document.for_each_word(&mut |word, items, index| {
         // A material written with `color` is not the PA1 framework's, which
-        // knows only `diffuseColor`: the D3 family (W-Solaris and kin).
+        // knows only `diffuseColor`, but the canonical grammar's (and the
+        // D3 family's, which `type d s r` or `refr` tell apart).
         if matches!(word, "Material" | "PhongMaterial")
             && let Some(ItemKind::Block(block)) = items.get(index).map(|i| &i.kind)
         {
-            type_vector |= block.items.iter().any(|i| i.word() == Some("color"));
+            color_material |= block.items.iter().any(|i| i.word() == Some("color"));
         }
         if word == "type" {
             let numbers = items
@@ -135,6 +134,9 @@ pub fn detect_dialect(document: &Document) -> Dialect {
     if type_vector {
         return Dialect::TypeVector;
     }
+    if color_material {
+        return Dialect::Canonical;
+    }
     Dialect::Pa1
 }
 
@@ -157,6 +159,10 @@ mod tests {
         assert_eq!(detect("Material { type 1 0 0 }"), Dialect::TypeVector);
         assert_eq!(
             detect("Materials { Material { color 1 1 1 specularColor 1 1 1 } }"),
+            Dialect::Canonical
+        );
+        assert_eq!(
+            detect("Materials { Material { color 1 1 1 type 0 1 0 } }"),
             Dialect::TypeVector
         );
         assert_eq!(detect("Material { refr 1.5 }"), Dialect::TypeVector);

@@ -7,6 +7,10 @@
 //! otherwise the scene's material wins, with a warning. Used `.mtl`
 //! materials are converted once per file (see `mtl`) and appended to the
 //! scene's materials; triangles without `usemtl` keep the scene's material.
+//! A missing or unreadable `.mtl` is warned where its materials would be
+//! used: not under a `MaterialIndex` that overrides them (the Stanford
+//! dragon's `mtllib dragon.mtl`, which does not exist, in a scene that
+//! gives the dragons their material).
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -38,6 +42,8 @@ struct MeshFile {
     /// Per triangle, the scene material index (after conversion), or
     /// [`OWN_MATERIAL`].
     face_materials: Option<Arc<[u32]>>,
+    /// Warnings of its `.mtl` files, not given yet (see the module docs).
+    library_warnings: Vec<String>,
 }
 
 /// The scene's OBJ files and the `.mtl` materials they added.
@@ -103,6 +109,7 @@ impl Meshes {
                 mesh: Arc::new(loaded.mesh),
                 materials: loaded.materials,
                 face_materials: None,
+                library_warnings: loaded.library_warnings,
             };
             self.files.insert(path.to_path_buf(), file);
         }
@@ -110,6 +117,12 @@ impl Meshes {
             return Err(context.error(at, format!("mesh '{}' was not kept", shown_path(path))));
         };
         let mesh = Arc::clone(&file.mesh);
+        let overridden = chosen.filter(|_| context.dialect != Dialect::Bow);
+        if overridden.is_none() {
+            for warning in std::mem::take(&mut file.library_warnings) {
+                context.warn(at, warning)?;
+            }
+        }
         let plain = |mesh| MeshInstance {
             mesh,
             face_materials: None,
@@ -117,9 +130,7 @@ impl Meshes {
         let Some(materials) = &file.materials else {
             return Ok(plain(mesh));
         };
-        if let Some(choice) = chosen
-            && context.dialect != Dialect::Bow
-        {
+        if let Some(choice) = overridden {
             let message = format!(
                 "mesh '{}': its .mtl materials are overridden by MaterialIndex {} (line {})",
                 shown_path(path),

@@ -33,7 +33,7 @@ use crate::scene::error::{Diagnostic, Location, SceneError, shown};
 use crate::scene::model::{Material, Object, Scene};
 
 pub use cursor::Cursor;
-pub use dialect::{detect_dialect, look_fingerprints};
+pub use dialect::{detect_dialect, distinct_words};
 use warning_tally::WarningTally;
 
 /// State shared by every build step: where we are, what went wrong so far.
@@ -272,7 +272,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         root,
         medium: scene_medium,
         dialect,
-        fingerprints: look_fingerprints(document),
+        words: distinct_words(document),
         warnings: context.take_warnings(),
         load,
     })

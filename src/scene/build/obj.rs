@@ -33,11 +33,13 @@ pub struct ObjMaterials {
 }
 
 /// A loaded OBJ: the mesh, its `.mtl` materials when some face uses one,
-/// and warnings (a missing or unreadable `.mtl`).
+/// and warnings: of the mesh (triangles left out), and of its `.mtl` files
+/// (missing or unreadable), which matter only where they would be used.
 pub struct LoadedObj {
     pub mesh: MeshData,
     pub materials: Option<ObjMaterials>,
     pub warnings: Vec<String>,
+    pub library_warnings: Vec<String>,
 }
 
 /// Loads an OBJ file; a missing `.mtl` is only a warning, and so are
@@ -56,7 +58,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     // tobj calls this once per `mtllib`, in order, and appends the materials
     // it returns: record each library with its text and material count.
     let libraries = RefCell::new(Vec::<(MaterialLibrary, usize)>::new());
-    let warnings = RefCell::new(Vec::new());
+    let library_warnings = RefCell::new(Vec::new());
     // Each library is read once however often `mtllib` names it (a repeat
     // adds no material), and all of them together within MAX_MESH_BYTES.
     let read_already = RefCell::new(Vec::<PathBuf>::new());
@@ -79,7 +81,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
                 String::from_utf8_lossy(&bytes).into_owned()
             }
             Err(e) => {
-                warnings.borrow_mut().push(format!(
+                library_warnings.borrow_mut().push(format!(
                     "mesh '{}': materials not loaded ({e})",
                     shown_path(path)
                 ));
@@ -91,7 +93,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
             Ok((materials, _)) => libraries
                 .borrow_mut()
                 .push((MaterialLibrary { path: full, text }, materials.len())),
-            Err(e) => warnings.borrow_mut().push(format!(
+            Err(e) => library_warnings.borrow_mut().push(format!(
                 "mesh '{}': materials of '{}' not loaded ({e})",
                 shown_path(path),
                 shown_path(&full)
@@ -106,7 +108,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
     .map_err(|_| format!("cannot read mesh '{}': malformed OBJ", shown_path(path)))?;
     let (models, materials) =
         loaded.map_err(|e| format!("cannot read mesh '{}': {e}", shown_path(path)))?;
-    let mut warnings = warnings.into_inner();
+    let mut warnings = Vec::new();
     let mut faces = Vec::new();
     let mut flat = 0usize;
     let mut mesh = MeshData::default();
@@ -200,6 +202,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
         mesh,
         materials,
         warnings,
+        library_warnings: library_warnings.into_inner(),
     })
 }
 
@@ -235,12 +238,14 @@ mod tests {
             mesh,
             materials,
             warnings,
+            library_warnings,
         } = load_obj(&file).expect("loads");
         assert!(materials.is_none());
         assert_eq!(mesh.positions.len(), 7);
         assert_eq!(mesh.triangles.len(), 3);
         assert!(mesh.triangles.iter().flatten().all(|&i| i < 7));
-        assert_eq!(warnings.len(), 1);
+        assert!(warnings.is_empty(), "{warnings:?}");
+        assert_eq!(library_warnings.len(), 1, "{library_warnings:?}");
         assert!(load_obj(&dir.join("none.obj")).is_err());
     }
 

@@ -1,0 +1,65 @@
+//! The fingerprints that say which renderer wrote a scene file, one row per
+//! renderer, in the order they are tried (the first row that matches wins).
+//! A row names the dialect the file must be read in and what else the file
+//! must contain; a file that matches no row renders in `original`. Adding a
+//! renderer is adding a row here (and its look in `look::rows` or the
+//! look's module).
+//!
+//! No row is of the canonical dialect, and no canonical field moves a file
+//! out of it (docs/guide/scene-format.md, "The canonical grammar"): a
+//! user's own file in that grammar is never taken for a coursework
+//! renderer's. `tests/look_detection.rs` holds this for every field.
+
+use super::{Evidence, Fingerprint};
+use crate::look::Look;
+use crate::scene::model::Dialect;
+
+/// Every fingerprint, tried in this order.
+pub const FINGERPRINTS: &[Fingerprint] = &[
+    Fingerprint {
+        dialect: Dialect::Pa1,
+        evidence: Evidence::Dialect,
+        look: Look::PA1,
+        says: "the course framework's ray caster (its materials' own words only: diffuseColor, specularColor, shininess)",
+    },
+    Fingerprint {
+        dialect: Dialect::Cambrian,
+        evidence: Evidence::Dialect,
+        look: Look::CAMBRIAN,
+        says: "Cambrian-yzt's path tracer",
+    },
+    Fingerprint {
+        dialect: Dialect::TypeVector,
+        evidence: Evidence::AnyWord(&["DepthCamera", "glossy", "speed"]),
+        look: Look::OSB,
+        says: "one-step-beh1nd's path tracer",
+    },
+    Fingerprint {
+        dialect: Dialect::TypeVector,
+        evidence: Evidence::AnyWord(&["DiskLights", "focal"]),
+        look: Look::YLC,
+        says: "ylc2001's path tracer",
+    },
+    Fingerprint {
+        dialect: Dialect::TypeVector,
+        // yuzc19's renderer has no bump maps; W-Solaris's has.
+        evidence: Evidence::AnyWord(&["bump"]),
+        look: Look::WSO,
+        says: "W-Solaris's path tracer (yuzc19's reads no bump maps)",
+    },
+    Fingerprint {
+        dialect: Dialect::TypeVector,
+        // W-Solaris's and yuzc19's files are otherwise word for word the
+        // same (vase.txt is scene09_norm.txt at another size).
+        evidence: Evidence::Dialect,
+        look: Look::YZC,
+        says: "yuzc19's path tracer; W-Solaris's files are word for word the same, \
+               --look wso renders them as W-Solaris's path tracer did",
+    },
+    Fingerprint {
+        dialect: Dialect::Cyy,
+        evidence: Evidence::Dialect,
+        look: Look::CYY,
+        says: "Chenyu-Yang-2000's path tracer",
+    },
+];
