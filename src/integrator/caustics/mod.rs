@@ -40,6 +40,7 @@
 
 mod connect;
 mod light_path;
+pub(crate) mod track;
 
 use crate::math::Vec3;
 use crate::render_scene::RenderScene;
