@@ -11,11 +11,11 @@ use clap::Args;
 use pathtracer::film::Film;
 use pathtracer::image_io::{DisplayImage, check_writable, read_image};
 use pathtracer::preview::board::Board;
-use pathtracer::preview::compare;
 use pathtracer::preview::passes::{Ended, render_passes};
 use pathtracer::preview::server::{self, Served};
 use pathtracer::preview::status::Status;
 use pathtracer::preview::watch::Watch;
+use pathtracer::preview::{compare, tev};
 use pathtracer::render::{Progress, RenderSettings, Renderer};
 use pathtracer::render_scene::RenderScene;
 
@@ -42,6 +42,10 @@ pub struct ViewArgs {
     /// measured again as the render converges.
     #[arg(long, value_name = "IMAGE")]
     against: Option<PathBuf>,
+    /// Also stream the film to the tev image viewer listening at
+    /// HOST:PORT (tev's default: 127.0.0.1:14158).
+    #[arg(long, value_name = "HOST:PORT")]
+    display: Option<String>,
     /// Where the page's exposure, tone curve and gamma start.
     #[command(flatten)]
     encoding: EncodingOptions,
@@ -113,6 +117,10 @@ pub fn run(args: &ViewArgs) -> Result<(), String> {
     let board = Arc::new(Board::default());
     if let (Some(theirs), Some(path)) = (theirs, &args.against) {
         compare::start(board.clone(), theirs, path.display().to_string())?;
+    }
+    if let Some(address) = &args.display {
+        let name = format!("pathtracer view {}", args.scene.display());
+        tev::start(board.clone(), tev::connect(address)?, name)?;
     }
     let mut status = Status {
         scene: args.scene.display().to_string(),

@@ -18,4 +18,5 @@ pub mod routes;
 pub mod save;
 pub mod server;
 pub mod status;
+pub mod tev;
 pub mod watch;
