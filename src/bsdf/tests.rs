@@ -14,7 +14,7 @@ use super::lambert::Lambert;
 use super::lobe::Lobe;
 use super::phong::Phong;
 use super::rough_dielectric::RoughDielectric;
-use super::{Bsdf, GlassChoice, Lobe as L, LobeSet, Rules};
+use super::{Bsdf, BsdfFlags, GlassChoice, Lobe as L, LobeSet, Rules};
 use crate::color::Color;
 use crate::math::Vec3;
 use crate::rng::Rng;
@@ -424,7 +424,7 @@ fn a_mixture_samples_its_continuous_part_by_its_pdf() {
         &|rng| {
             let u = [rng.next_f64(), rng.next_f64()];
             bsdf.sample(&wo, rng.next_f64(), u)
-                .map(|s| (bsdf.to_local(&s.wi), s.delta))
+                .map(|s| (bsdf.to_local(&s.wi), s.is_delta()))
         },
         &|wi| bsdf.pdf(&wo, &bsdf.to_world(wi)),
         300_000,
@@ -432,7 +432,7 @@ fn a_mixture_samples_its_continuous_part_by_its_pdf() {
     assert!(p > SIGNIFICANCE, "p-value {p:e}");
     let smooth = sphere_integral(&|wi| bsdf.pdf(&wo, &bsdf.to_world(wi)), 1000, 2000);
     assert!(
-        (smooth - bsdf.smooth_probability()).abs() < 1e-3,
+        (smooth - bsdf.probability(BsdfFlags::CONTINUOUS)).abs() < 1e-3,
         "{smooth}"
     );
     // Weights are the mixture's eval over its pdf.
@@ -442,7 +442,7 @@ fn a_mixture_samples_its_continuous_part_by_its_pdf() {
         let Some(s) = bsdf.sample(&wo, rng.next_f64(), u) else {
             continue;
         };
-        if s.delta {
+        if s.is_delta() {
             continue;
         }
         let expected = bsdf.eval(&wo, &s.wi) / bsdf.pdf(&wo, &s.wi);
