@@ -1,9 +1,8 @@
-//! Statistical tests of every lobe, of the kind pbrt's and Mitsuba's suites
-//! run: the directions `sample` produces are distributed as `pdf` says (a
-//! chi-square test over a grid on the sphere), `pdf` integrates to 1 over
-//! the sphere, `sample`'s weight and density are `eval / pdf` and `pdf`,
-//! `eval` is reciprocal, and a rough conductor of reflectance 1 loses only
-//! what single scattering loses.
+//! Statistical tests of every lobe, as pbrt's and Mitsuba's suites run: the
+//! directions `sample` produces are distributed as `pdf` says (chi-square
+//! over a grid on the sphere), `pdf` integrates to 1, `sample`'s weight and
+//! density are `eval / pdf` and `pdf`, `eval` is reciprocal, and a rough
+//! conductor of reflectance 1 loses only what single scattering loses.
 
 use std::f64::consts::PI;
 
