@@ -12,7 +12,10 @@ use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
 /// Folders whose renderer has no look yet, and why (issue 31).
 const NOT_YET: [(&str, &str); 4] = [
     ("Tschal-rsa+rang-kardan", "photon mapping (its own issue)"),
-    ("yao-jz+Computer-Graphics-THU", "photon mapping (its own issue)"),
+    (
+        "yao-jz+Computer-Graphics-THU",
+        "photon mapping (its own issue)",
+    ),
     ("yangjunx21+jt_lighting", "its look is not written yet"),
     ("chen-yingfa+raytracer", "its look is not written yet"),
 ];
@@ -28,7 +31,9 @@ fn scenes_of(folder: &Path) -> Vec<PathBuf> {
 
 #[test]
 fn every_coursework_scene_gets_a_look_of_its_own() {
-    let Some(shared) = common::shared() else { return };
+    let Some(shared) = common::shared() else {
+        return;
+    };
     let reference = shared.join("reference");
     let mut folders = vec![reference.join("cambrian-pathtracer")];
     let mut coursework: Vec<PathBuf> = std::fs::read_dir(reference.join("coursework"))
@@ -63,5 +68,9 @@ fn every_coursework_scene_gets_a_look_of_its_own() {
         }
     }
     assert!(checked > 100, "only {checked} scenes checked");
-    assert!(without.is_empty(), "without a look of their own:\n{}", without.join("\n"));
+    assert!(
+        without.is_empty(),
+        "without a look of their own:\n{}",
+        without.join("\n")
+    );
 }
