@@ -372,6 +372,17 @@ mod tests {
     }
 
     #[test]
+    fn pairs_of_several_files_are_summed_up_file_by_file() {
+        let mut oracle = row(Confidence::Ok, Ok(figures(false)));
+        oracle.source = "oracle-pairs.tsv".to_string();
+        let rows = [row(Confidence::Ok, Ok(figures(true))), oracle];
+        assert_eq!(
+            summary(&rows),
+            "pairs.tsv: 1 of 1 ok pairs look the same; oracle-pairs.tsv: 0 of 1 ok pairs look the same"
+        );
+    }
+
+    #[test]
     fn csv_has_one_line_per_row_with_every_column_and_quotes_what_needs_it() {
         let rows = [
             row(Confidence::Ok, Ok(figures(true))),
@@ -384,7 +395,7 @@ mod tests {
         assert_eq!(lines[1].split(',').count(), columns);
         assert!(lines[1].contains(",160,80,200x100,1.25,1.000,3.000,same,0.10000,false,"));
         assert!(
-            lines[2].ends_with(",failed,,,\"x.txt:3:4: \"\"a\"\", b\""),
+            lines[2].ends_with(",failed,,,\"x.txt:3:4: \"\"a\"\", b\",pairs.tsv"),
             "{}",
             lines[2]
         );
@@ -403,7 +414,9 @@ mod tests {
             settings: "path".to_string(),
         };
         let page = html(&rows, &run);
-        assert_eq!(page.matches("<tr><td>").count(), 2);
+        // One row per pair, and one for the renderer in the table by renderer.
+        assert_eq!(page.matches("<tr><td>repo/a+b<br>").count(), 2);
+        assert!(page.contains("<tr><td>repo/a+b</td><td>pairs.tsv</td><td>0 of 2</td>"));
         assert!(page.contains("images/repo-a-b__x.ours.png"));
         assert!(page.contains("images/repo-a-b__x.diff.png"));
         assert!(page.contains("&lt;missing&gt; &amp; gone"));

@@ -84,7 +84,9 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         says: "W-Solaris's path tracer (yuzc19's reads no bump maps)",
     },
     Fingerprint {
-        dialects: &[Dialect::TypeVector],
+        // Its scene05 has only the framework's words and `color`: the
+        // canonical dialect, rendered by W-Solaris's path tracer all the same.
+        dialects: &[Dialect::TypeVector, Dialect::Canonical],
         // "computer-graphics" alone is anybody's folder.
         evidence: Evidence::Folder {
             owner: "W-Solaris",
