@@ -102,6 +102,22 @@ impl LobeSet {
         set
     }
 
+    /// The weights of its mirror and smooth-glass lobes and its index of
+    /// refraction, for the Whitted estimators that follow both at once
+    /// (jefflyy's `reflective` and `transmissive`).
+    pub fn mirror_and_glass(&self) -> (f64, f64, f64) {
+        let mut mirror = 0.0;
+        let mut glass = 0.0;
+        for (lobe, weight) in self.lobes.iter().zip(&self.weights) {
+            match lobe {
+                Lobe::Conductor(c) if c.is_delta() => mirror += weight,
+                Lobe::Dielectric(_) => glass += weight,
+                _ => {}
+            }
+        }
+        (mirror, glass, self.ior)
+    }
+
     /// Whether a lobe is a delta lobe (a mirror or smooth glass).
     pub fn has_delta(&self) -> bool {
         self.smooth_lobes < self.lobes.len()

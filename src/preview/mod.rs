@@ -10,6 +10,7 @@
 //! connections come ([`server::MAX_CONNECTIONS`], one frame held).
 
 pub mod board;
+pub mod compare;
 pub mod frame;
 pub mod http;
 pub mod passes;
