@@ -32,7 +32,7 @@
 //! `1 / SPLIT`, and the probes add the rest. The PA1 point and directional lights are added at every
 //! vertex, as the original does.
 
-use crate::bsdf::{Bsdf, GlassChoice, LobeSet};
+use crate::bsdf::{Bsdf, BsdfFlags, GlassChoice, LobeSet};
 use crate::color::Color;
 use crate::look::Miss;
 use crate::math::{Point3, Ray, Vec3};
@@ -187,8 +187,8 @@ pub fn radiance(
         add(&mut result, log, depth, Term::DirectLights, None, lights);
         if depth == scene.max_depth()
             && scene.light_sample_ends_paths()
-            && bsdf.lambert().is_some()
-            && bsdf.smooth_probability() >= 1.0
+            && bsdf.diffuse_f().is_some()
+            && bsdf.probability(BsdfFlags::CONTINUOUS) >= 1.0
         {
             // The last vertex: its bounce could only find emission, which
             // the light sample then counts alone (weight 1, no MIS).
@@ -213,7 +213,7 @@ pub fn radiance(
         // Where the ray that found this vertex came from (for the caustic track).
         let arrived_from = origin.take();
         let split_here = split::splits(scene, depth, arrived_from.is_none());
-        if split_here && bsdf.smooth_probability() > 0.0 {
+        if split_here && bsdf.probability(BsdfFlags::CONTINUOUS) > 0.0 {
             let chain = throughput
                 * split::chain_emission(
                     scene, &at, &bsdf, &wo, depth, ray.time, sampler, &spectrum,
@@ -221,21 +221,21 @@ pub fn radiance(
             add(&mut result, log, depth, Term::SplitChain, None, chain);
         }
         let direction = scattered.wi;
-        if scattered.delta {
-            if caustics::crosses_nonreciprocal(&at, &scattered.wi) {
+        if scattered.is_delta() {
+            if scattered.flags.contains(BsdfFlags::NONRECIPROCAL) {
                 track = None;
             }
             count_chain_vertex(&mut track);
             delta_run += 1;
         } else {
             delta_run = 0;
-            let smooth = bsdf.smooth_probability();
+            let smooth = bsdf.probability(BsdfFlags::CONTINUOUS);
             let direct = throughput
                 * light_sample(
                     scene, &at, &bsdf, &wo, smooth, ray.time, sampler, &spectrum, true,
                 );
             add(&mut result, log, depth, Term::LightSample, None, direct);
-            let lambert = bsdf.lambert();
+            let lambert = bsdf.diffuse_f();
             if let Some(f) = lambert
                 && let Some(y) = light_path.filter(|y| depth + 1 + y.chain <= scene.max_depth())
             {
@@ -267,7 +267,7 @@ pub fn radiance(
             wi: direction,
             weight: scattered.weight,
             pdf: scattered.pdf,
-            delta: scattered.delta,
+            flags: scattered.flags,
             throughput,
         });
         if spectrum.is_dark(&throughput) {

@@ -82,6 +82,18 @@ impl Look {
         ..Look::PA1
     };
 
+    pub const CAV: Look = Look {
+        name: "cav",
+        renderer: "CaveSpiderLZJ/PathTracingFinal",
+        // Its paths stop at the 9th hit, which adds its emission.
+        max_depth: 8,
+        miss: Miss::Weighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        texture_rows: TextureRows::Down,
+        ..Look::ORIGINAL
+    };
+
     pub const CAMBRIAN: Look = Look {
         name: "cambrian",
         renderer: "Cambrian-yzt/PathTracer",
@@ -154,7 +166,7 @@ impl Look {
     };
 
     /// Every look, by name.
-    pub const ALL: [Look; 12] = [
+    pub const ALL: [Look; 13] = [
         Look::ORIGINAL,
         Look::PHYSICAL,
         Look::PA1,
@@ -167,5 +179,6 @@ impl Look {
         Look::HAN,
         Look::JEF,
         Look::EMJ,
+        Look::CAV,
     ];
 }

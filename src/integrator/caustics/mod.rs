@@ -47,7 +47,7 @@ use crate::render_scene::RenderScene;
 use crate::world::WorldHit;
 
 pub use connect::{camera_edge, connect, edge_density};
-pub use light_path::{CausticVertex, crosses_nonreciprocal, trace};
+pub use light_path::{CausticVertex, trace};
 
 /// The emission density (see the module documentation) of the light point
 /// of `hit` for light leaving it in unit `direction`. Directions are

@@ -19,12 +19,14 @@ pub enum Evidence {
     /// At least one of these words, anywhere in the file.
     AnyWord(&'static [&'static str]),
     /// The file lies in a clone of the renderer's repository: a folder on
-    /// its path is named `repository` or `owner+repository` (the layout of
-    /// `../shared/reference/coursework/`). For renderers whose files are
-    /// the course framework's, word for word.
+    /// its path is named `owner+repository` (the layout of
+    /// `../shared/reference/coursework/`) or, where the name is the
+    /// renderer's alone (`repository_alone`), `repository`. For renderers
+    /// whose files are another's, word for word.
     Folder {
         owner: &'static str,
         repository: &'static str,
+        repository_alone: bool,
     },
 }
 
@@ -54,14 +56,18 @@ impl Fingerprint {
                 .iter()
                 .find(|word| scene.has_word(word))
                 .map(|word| format!("{dialect} with '{word}'")),
-            Evidence::Folder { owner, repository } => {
+            Evidence::Folder {
+                owner,
+                repository,
+                repository_alone,
+            } => {
                 let joined = format!("{owner}+{repository}");
                 scene
                     .source
                     .ancestors()
                     .skip(1)
                     .filter_map(|folder| folder.file_name()?.to_str())
-                    .any(|name| name == repository || name == joined)
+                    .any(|name| name == joined || (repository_alone && name == repository))
                     .then(|| format!("{dialect} in a folder of {owner}/{repository}"))
             }
         }

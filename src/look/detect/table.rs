@@ -21,6 +21,7 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         evidence: Evidence::Folder {
             owner: "hanna0911",
             repository: "image-renderer",
+            repository_alone: true,
         },
         look: Look::HAN,
         says: "hanna0911's ray caster (its files are the framework's; --look pa1 for pixel centres)",
@@ -30,6 +31,7 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         evidence: Evidence::Folder {
             owner: "emily-jia",
             repository: "graphic_homework",
+            repository_alone: true,
         },
         look: Look::EMJ,
         says: "emily-jia's Whitted ray tracer (its files are the framework's; --look pa1 for its ray caster)",
@@ -45,6 +47,7 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         evidence: Evidence::Folder {
             owner: "jefflyy",
             repository: "CG_2022spring",
+            repository_alone: true,
         },
         look: Look::JEF,
         says: "jefflyy's Whitted ray tracer (its files are the framework's; --look pa1 for its ray caster)",
@@ -81,6 +84,29 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         says: "W-Solaris's path tracer (yuzc19's reads no bump maps)",
     },
     Fingerprint {
+        // Its scene05 has only the framework's words and `color`: the
+        // canonical dialect, rendered by W-Solaris's path tracer all the same.
+        dialects: &[Dialect::TypeVector, Dialect::Canonical],
+        // "computer-graphics" alone is anybody's folder.
+        evidence: Evidence::Folder {
+            owner: "W-Solaris",
+            repository: "computer-graphics",
+            repository_alone: false,
+        },
+        look: Look::WSO,
+        says: "W-Solaris's path tracer (its files are yuzc19's word for word; --look yzc for yuzc19's)",
+    },
+    Fingerprint {
+        dialects: &[Dialect::TypeVector],
+        evidence: Evidence::Folder {
+            owner: "one-step-beh1nd",
+            repository: "THU2024Spring-CG-Final",
+            repository_alone: true,
+        },
+        look: Look::OSB,
+        says: "one-step-beh1nd's path tracer (this file is yuzc19's word for word; --look yzc for yuzc19's)",
+    },
+    Fingerprint {
         dialects: &[Dialect::TypeVector],
         // W-Solaris's and yuzc19's files are otherwise word for word the
         // same (vase.txt is scene09_norm.txt at another size).
@@ -88,6 +114,12 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         look: Look::YZC,
         says: "yuzc19's path tracer; W-Solaris's files are word for word the same, \
                --look wso renders them as W-Solaris's path tracer did",
+    },
+    Fingerprint {
+        dialects: &[Dialect::Cav],
+        evidence: Evidence::Dialect,
+        look: Look::CAV,
+        says: "CaveSpiderLZJ's path tracer",
     },
     Fingerprint {
         dialects: &[Dialect::Cyy],
