@@ -9,6 +9,7 @@
 //! [`metrics`] compares images (RMSE, relative MSE, PSNR, SSIM, FLIP, the
 //! look-alike criterion); [`pairs`] measures our renders of reference pairs.
 
+#![forbid(unsafe_code)]
 // A failed `eprintln!` panics: messages go through `stderr_line!` (console.rs).
 #![deny(clippy::print_stderr)]
 
@@ -58,3 +59,16 @@ pub mod texture_frames;
 pub mod trig;
 pub mod uv_rule;
 pub mod world;
+
+// The few names a program that renders needs (the rest stay in their modules).
+pub use color::Color;
+pub use debug_sample::{SampleTrace, trace_sample};
+pub use film::Film;
+pub use image_io::Image;
+pub use integrator::Integrator;
+pub use look::Look;
+pub use render::{RenderSettings, RenderStats, Renderer, render};
+pub use render_scene::{RenderScene, SceneSettings};
+pub use sampler::SamplerKind;
+pub use scene::model::Scene;
+pub use scene::{LoadOptions, load_scene};

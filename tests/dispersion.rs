@@ -56,7 +56,7 @@ fn refract(set: &LobeSet, d: Vec3, normal: Vec3, entering: bool, spectrum: &Path
     let sample = bsdf
         .sample(&wo, 1.0 - 1e-9, [0.5, 0.5])
         .expect("a direction");
-    assert!(sample.delta);
+    assert!(sample.is_delta());
     sample.wi
 }
 

@@ -244,7 +244,8 @@ fn lookalike_renders_each_pair_as_render_would_and_reports_failures_as_rows() {
         lines[2]
     );
     let page = std::fs::read_to_string(out.join("index.html")).unwrap();
-    assert_eq!(page.matches("<tr><td>").count(), 2);
+    // A row per pair (its scene and render in code), beside the table by renderer.
+    assert_eq!(page.matches("</code><br><code>").count(), 2);
     for kind in ["ours", "theirs", "diff"] {
         assert!(
             out.join(format!("images/repo-one__box.{kind}.png"))

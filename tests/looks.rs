@@ -75,6 +75,12 @@ fn a_miss_brings_back_what_the_look_says() {
             "{}",
             value(Look::PHYSICAL)
         );
+        // CaveSpiderLZJ's adds the background times the throughput too.
+        assert!(
+            (value(Look::CAV) - 0.4).abs() <= exact,
+            "{}",
+            value(Look::CAV)
+        );
         // W-Solaris adds the sky raw on every miss: the floor glows with it.
         assert!(
             (value(Look::WSO) - 0.8).abs() <= exact,
@@ -117,6 +123,21 @@ fn the_pa1_look_casts_rays_with_the_framework_phong_term() {
     let expected = (0.2 + 0.3) * 0.9;
     assert!((centre.r - expected).abs() < 1e-9, "{centre:?}");
     assert!((centre.g - (0.4 + 0.3) * 0.9).abs() < 1e-9);
+}
+
+#[test]
+fn the_cav_look_takes_no_light_from_the_lights_block() {
+    // The floor under a black sky, lit only by a point light: the original
+    // (a scene without emitters) adds the light, CaveSpiderLZJ's does not.
+    let mut scene = floor_under_sky();
+    scene.background = Color::BLACK;
+    scene.lights = vec![Light::Point {
+        position: pathtracer::math::Point3::new(0.0, 3.0, 0.0),
+        color: Color::gray(1.0),
+    }];
+    let value = |look: Look| mean(&scene, &settings(look, Integrator::Path, 4)).r;
+    assert!(value(Look::ORIGINAL) > 0.1, "{}", value(Look::ORIGINAL));
+    assert_eq!(value(Look::CAV), 0.0);
 }
 
 /// Camera looking down at a glass plane (y = 0) over a diffuse floor

@@ -14,6 +14,7 @@ use super::conductor::Conductor;
 use super::cook_torrance::CookTorrance;
 use super::dielectric::Dielectric;
 use super::dielectric::GlassChoice;
+use super::flags::BsdfFlags;
 use super::fresnel::DielectricFresnel;
 use super::lambert::Lambert;
 use super::osb_glossy::OsbGlossy;
@@ -72,14 +73,22 @@ impl Lobe {
         }
     }
 
-    /// Whether `sample` reads `uc` (a choice between reflection and refraction).
-    pub fn reads_choice(&self) -> bool {
-        matches!(self, Lobe::Dielectric(_) | Lobe::RoughDielectric(_))
-    }
-
-    /// Whether `sample` reads `u` (a direction of a continuous lobe).
-    pub fn reads_direction(&self) -> bool {
-        !self.is_delta()
+    /// What kind of scattering it does.
+    #[inline]
+    pub fn flags(&self) -> BsdfFlags {
+        let kind = match self {
+            Lobe::Lambert(_) => BsdfFlags::DIFFUSE,
+            Lobe::Conductor(c) if c.is_delta() => BsdfFlags::SPECULAR,
+            Lobe::Dielectric(_) => BsdfFlags::SPECULAR,
+            _ => BsdfFlags::GLOSSY,
+        };
+        let sides = match self {
+            Lobe::Dielectric(_) | Lobe::RoughDielectric(_) => {
+                BsdfFlags::REFLECTION | BsdfFlags::TRANSMISSION
+            }
+            _ => BsdfFlags::REFLECTION,
+        };
+        kind | sides
     }
 
     /// About how much the lobe reflects (its mean tint; a Schlick term's

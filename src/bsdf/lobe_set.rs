@@ -3,7 +3,7 @@
 
 use arrayvec::ArrayVec;
 
-use super::{Lobe, MAX_LOBES};
+use super::{BsdfFlags, Lobe, MAX_LOBES};
 use crate::scene::model::ConductorFresnel;
 use crate::spectral::Dispersion;
 
@@ -31,11 +31,11 @@ pub struct LobeSet {
     /// The dispersion of its dielectric lobe (none without one).
     pub(super) dispersion: Option<Dispersion>,
     pub(super) smooth_lobes: usize,
-    pub(super) only_lambert: bool,
+    /// The kinds of scattering of its lobes, and of its continuous lobes.
+    pub(super) flags: BsdfFlags,
+    pub(super) continuous: BsdfFlags,
     /// One Lambert lobe tinted by the hit's colour, nothing else.
     pub(super) single_lambert: bool,
-    pub(super) reads_choice: bool,
-    pub(super) reads_direction: bool,
 }
 
 impl LobeSet {
@@ -53,15 +53,11 @@ impl LobeSet {
         }
         let i = self.lobes.len();
         let delta = lobe.is_delta();
-        self.reads_choice |= i > 0 || lobe.reads_choice();
-        self.reads_direction |= !delta;
+        self.flags = self.flags | lobe.flags();
         if !delta {
+            self.continuous = self.continuous | lobe.flags();
             self.smooth_lobes += 1;
         }
-        if i == 0 {
-            self.only_lambert = true;
-        }
-        self.only_lambert &= delta || matches!(lobe, Lobe::Lambert(_));
         self.weights[i] = weight;
         self.tinted[i] = tinted;
         self.follows_rules[i] = follows_rules;
@@ -104,6 +100,22 @@ impl LobeSet {
             lobe.set_ior(ior);
         }
         set
+    }
+
+    /// The weights of its mirror and smooth-glass lobes and its index of
+    /// refraction, for the Whitted estimators that follow both at once
+    /// (jefflyy's `reflective` and `transmissive`).
+    pub fn mirror_and_glass(&self) -> (f64, f64, f64) {
+        let mut mirror = 0.0;
+        let mut glass = 0.0;
+        for (lobe, weight) in self.lobes.iter().zip(&self.weights) {
+            match lobe {
+                Lobe::Conductor(c) if c.is_delta() => mirror += weight,
+                Lobe::Dielectric(_) => glass += weight,
+                _ => {}
+            }
+        }
+        (mirror, glass, self.ior)
     }
 
     /// Whether a lobe is a delta lobe (a mirror or smooth glass).

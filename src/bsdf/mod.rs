@@ -3,7 +3,7 @@
 //! formulas live. The integrators and the light subpaths ask three things:
 //!
 //! - [`Bsdf::sample`]`(wo, uc, u)`: a direction `wi` with its weight
-//!   `f |cos_i| / pdf`, its density and whether it is a delta direction;
+//!   `f |cos_i| / pdf`, its density and its kind ([`BsdfFlags`]);
 //! - [`Bsdf::eval`]`(wo, wi)`: `f(wo, wi) |cos_i|` of the continuous lobes;
 //! - [`Bsdf::pdf`]`(wo, wi)`: the density with which `sample` gives `wi`.
 //!
@@ -19,8 +19,10 @@
 //! that probability; a continuous lobe's sample by the whole continuous
 //! part, `sum w_j f_j |cos| / sum p_j pdf_j`, so that `eval` and `pdf` are
 //! the mixture's. The continuous part's total probability is
-//! [`Bsdf::smooth_probability`]: an integrator that samples lights only
-//! when `sample` chose a continuous lobe divides by it.
+//! [`Bsdf::probability`]`(BsdfFlags::CONTINUOUS)`: an integrator that
+//! samples lights only when `sample` chose a continuous lobe divides by it.
+//! Integrators ask what kind of scattering a BSDF or a sample does by its
+//! [`BsdfFlags`] (`kinds`), never by naming a lobe.
 //!
 //! All directions are world-space unit vectors pointing away from the
 //! surface; `wo` is on the side of the shading normal the BSDF was built
@@ -30,7 +32,9 @@ pub mod build;
 pub mod conductor;
 pub mod cook_torrance;
 pub mod dielectric;
+pub mod flags;
 pub mod fresnel;
+mod kinds;
 pub mod lambert;
 pub mod lobe;
 mod lobe_set;
@@ -39,6 +43,8 @@ pub mod osb_glossy;
 pub mod phong;
 pub mod rough_dielectric;
 
+#[cfg(test)]
+mod kinds_tests;
 #[cfg(test)]
 mod tests;
 
@@ -50,6 +56,7 @@ use crate::spectral::Dispersion;
 
 pub use build::Rules;
 pub use dielectric::GlassChoice;
+pub use flags::{BsdfFlags, TransportMode};
 pub use fresnel::DielectricFresnel;
 pub use lambert::Lambert;
 pub use lobe::{Lobe, LobeSample};
@@ -69,7 +76,16 @@ pub struct BsdfSample {
     /// angle, with the probabilities of the lobes); for a delta direction
     /// the probability of the lobe.
     pub pdf: f64,
-    pub delta: bool,
+    /// The kind of the chosen lobe, on the side `wi` left to.
+    pub flags: BsdfFlags,
+}
+
+impl BsdfSample {
+    /// A delta direction (a mirror, smooth glass).
+    #[inline]
+    pub fn is_delta(&self) -> bool {
+        self.flags.is_specular()
+    }
 }
 
 /// A lobe set at one hit: a handful of words (the set, the hit's colour,
@@ -84,6 +100,10 @@ pub struct Bsdf<'a> {
     rules: Rules,
     /// The outgoing direction's cosine (for angle-dependent weights).
     cos_o: f64,
+    /// The geometric normal (on the side of `wo`) of a surface whose
+    /// transport is not the same both ways (see [`BsdfFlags::NONRECIPROCAL`]).
+    nonreciprocal: Option<Vec3>,
+    mode: TransportMode,
 }
 
 /// The weights and probabilities of the lobes at one hit.
@@ -113,6 +133,8 @@ impl<'a> Bsdf<'a> {
             entering,
             rules,
             cos_o,
+            nonreciprocal: None,
+            mode: TransportMode::Radiance,
         }
     }
 
@@ -134,6 +156,8 @@ impl<'a> Bsdf<'a> {
             entering: self.entering,
             rules: self.rules,
             cos_o: self.cos_o,
+            nonreciprocal: self.nonreciprocal,
+            mode: self.mode,
         }
     }
 
@@ -241,55 +265,6 @@ impl<'a> Bsdf<'a> {
         tangent * v.x + bitangent * v.y + self.normal * v.z
     }
 
-    /// Whether [`Bsdf::sample`] reads `uc`: a choice between lobes, or
-    /// between reflection and refraction.
-    #[inline]
-    pub fn reads_choice(&self) -> bool {
-        self.set.reads_choice
-    }
-
-    /// Whether [`Bsdf::sample`] reads `u`: a continuous lobe.
-    #[inline]
-    pub fn reads_direction(&self) -> bool {
-        self.set.reads_direction
-    }
-
-    /// The probability that [`Bsdf::sample`] chooses a continuous lobe.
-    #[inline]
-    pub fn smooth_probability(&self) -> f64 {
-        if self.set.fixed {
-            return self.set.fixed_smooth;
-        }
-        self.with_mixture(|_, p| {
-            (0..self.set.lobes.len())
-                .filter(|&i| !self.set.lobes[i].is_delta())
-                .map(|i| p[i])
-                .sum()
-        })
-    }
-
-    /// `f` of the continuous part when it is made of Lambert lobes only
-    /// (what a caustic connection needs); `None` when it is not, or empty.
-    #[inline]
-    pub fn lambert(&self) -> Option<Color> {
-        let set = self.set;
-        if !set.only_lambert || set.smooth_lobes == 0 {
-            return None;
-        }
-        if set.single_lambert {
-            return Some(self.color * (set.weights[0] * FRAC_1_PI));
-        }
-        self.with_mixture(|weights, _| {
-            let mut f = Color::BLACK;
-            for (i, lobe) in set.lobes.iter().enumerate() {
-                if !lobe.is_delta() {
-                    f += self.tint(i) * weights[i];
-                }
-            }
-            Some(f * FRAC_1_PI)
-        })
-    }
-
     /// A direction for `wo`: `uc` chooses the lobe (and, rescaled, between
     /// reflection and refraction), `u` the direction of a continuous lobe.
     #[inline(always)]
@@ -298,16 +273,17 @@ impl<'a> Bsdf<'a> {
             // The common case: one tinted Lambert lobe.
             let weight = self.color * self.set.weights[0];
             let wi = lambert::cosine_hemisphere(u);
-            return Some(BsdfSample {
+            return self.transported(BsdfSample {
                 wi: self.to_world(&wi),
                 weight,
                 pdf: wi.z * FRAC_1_PI,
-                delta: false,
+                flags: BsdfFlags::DIFFUSE_REFLECTION,
             });
         }
-        self.with_mixture(|weights, probabilities| {
+        let sample = self.with_mixture(|weights, probabilities| {
             self.sample_mixture(wo, uc, u, weights, probabilities)
-        })
+        })?;
+        self.transported(sample)
     }
 
     #[inline(never)]
@@ -325,12 +301,13 @@ impl<'a> Bsdf<'a> {
         let sample = lobe.sample(&local_wo, uc, u)?;
         let probability = probabilities[index];
         let wi = self.to_world(&sample.wi);
+        let flags = kinds::on_side(lobe.flags(), sample.wi.z);
         if sample.delta || self.set.smooth_lobes == 1 {
             return Some(BsdfSample {
                 wi,
                 weight: sample.weight * (weights[index] / probability),
                 pdf: sample.pdf * probability,
-                delta: sample.delta,
+                flags,
             });
         }
         let mut f = Color::BLACK;
@@ -353,7 +330,7 @@ impl<'a> Bsdf<'a> {
             wi,
             weight,
             pdf,
-            delta: false,
+            flags,
         })
     }
 
@@ -369,8 +346,8 @@ impl<'a> Bsdf<'a> {
 
     #[inline(never)]
     fn eval_mixture(&self, wo: &Vec3, wi: &Vec3) -> Color {
-        if self.set.only_lambert {
-            return self.lambert().unwrap_or(Color::BLACK) * self.normal.dot(wi).max(0.0);
+        if self.set.continuous.is_diffuse_reflection_only() {
+            return self.diffuse_f().unwrap_or(Color::BLACK) * self.normal.dot(wi).max(0.0);
         }
         let (wo, wi) = (self.to_local(wo), self.to_local(wi));
         self.with_mixture(|weights, _| {
@@ -396,9 +373,9 @@ impl<'a> Bsdf<'a> {
 
     #[inline(never)]
     fn pdf_mixture(&self, wo: &Vec3, wi: &Vec3) -> f64 {
-        if self.set.only_lambert {
+        if self.set.continuous.is_diffuse_reflection_only() {
             let cosine = self.normal.dot(wi).max(0.0);
-            return self.smooth_probability() * cosine * FRAC_1_PI;
+            return self.probability(BsdfFlags::CONTINUOUS) * cosine * FRAC_1_PI;
         }
         let (wo, wi) = (self.to_local(wo), self.to_local(wi));
         self.with_mixture(|_, probabilities| {

@@ -1,9 +1,8 @@
-//! Statistical tests of every lobe, of the kind pbrt's and Mitsuba's suites
-//! run: the directions `sample` produces are distributed as `pdf` says (a
-//! chi-square test over a grid on the sphere), `pdf` integrates to 1 over
-//! the sphere, `sample`'s weight and density are `eval / pdf` and `pdf`,
-//! `eval` is reciprocal, and a rough conductor of reflectance 1 loses only
-//! what single scattering loses.
+//! Statistical tests of every lobe, as pbrt's and Mitsuba's suites run: the
+//! directions `sample` produces are distributed as `pdf` says (chi-square
+//! over a grid on the sphere), `pdf` integrates to 1, `sample`'s weight and
+//! density are `eval / pdf` and `pdf`, `eval` is reciprocal, and a rough
+//! conductor of reflectance 1 loses only what single scattering loses.
 
 use std::f64::consts::PI;
 
@@ -14,7 +13,7 @@ use super::lambert::Lambert;
 use super::lobe::Lobe;
 use super::phong::Phong;
 use super::rough_dielectric::RoughDielectric;
-use super::{Bsdf, GlassChoice, Lobe as L, LobeSet, Rules};
+use super::{Bsdf, BsdfFlags, GlassChoice, Lobe as L, LobeSet, Rules};
 use crate::color::Color;
 use crate::math::Vec3;
 use crate::rng::Rng;
@@ -424,7 +423,7 @@ fn a_mixture_samples_its_continuous_part_by_its_pdf() {
         &|rng| {
             let u = [rng.next_f64(), rng.next_f64()];
             bsdf.sample(&wo, rng.next_f64(), u)
-                .map(|s| (bsdf.to_local(&s.wi), s.delta))
+                .map(|s| (bsdf.to_local(&s.wi), s.is_delta()))
         },
         &|wi| bsdf.pdf(&wo, &bsdf.to_world(wi)),
         300_000,
@@ -432,7 +431,7 @@ fn a_mixture_samples_its_continuous_part_by_its_pdf() {
     assert!(p > SIGNIFICANCE, "p-value {p:e}");
     let smooth = sphere_integral(&|wi| bsdf.pdf(&wo, &bsdf.to_world(wi)), 1000, 2000);
     assert!(
-        (smooth - bsdf.smooth_probability()).abs() < 1e-3,
+        (smooth - bsdf.probability(BsdfFlags::CONTINUOUS)).abs() < 1e-3,
         "{smooth}"
     );
     // Weights are the mixture's eval over its pdf.
@@ -442,7 +441,7 @@ fn a_mixture_samples_its_continuous_part_by_its_pdf() {
         let Some(s) = bsdf.sample(&wo, rng.next_f64(), u) else {
             continue;
         };
-        if s.delta {
+        if s.is_delta() {
             continue;
         }
         let expected = bsdf.eval(&wo, &s.wi) / bsdf.pdf(&wo, &s.wi);

@@ -27,9 +27,11 @@ use super::SamplingOptions;
 
 #[derive(Args)]
 pub struct LookalikeArgs {
-    /// The pairs file: tab-separated folder, base, scene, render, pixels,
-    /// ok|doubt; paths relative to the file's own directory.
-    pairs: PathBuf,
+    /// The pairs files: tab-separated folder, base, scene, render, pixels,
+    /// ok|doubt; paths relative to each file's own directory. Several
+    /// files are measured in one run and summed up file by file.
+    #[arg(required = true)]
+    pairs: Vec<PathBuf>,
     /// Width of our renders; the height follows the render's aspect ratio.
     #[arg(long, default_value_t = 160, value_parser = clap::value_parser!(u32).range(1..=4096))]
     width: u32,
@@ -55,34 +57,43 @@ pub struct LookalikeArgs {
 }
 
 pub fn run(args: &LookalikeArgs) -> Result<(), String> {
-    let root = args
-        .pairs
-        .parent()
-        .map(Path::to_path_buf)
-        .unwrap_or_default();
-    let pairs: Vec<Pair> = read_pairs(&args.pairs)?
-        .into_iter()
-        .filter(|p| args.only == "all" || p.confidence == Confidence::Ok)
-        .filter(|p| {
-            args.folder
-                .as_ref()
-                .is_none_or(|f| p.folder.contains(f.as_str()))
-        })
-        .collect();
+    // Each pair with the directory its paths start from and its file's name.
+    let mut pairs: Vec<(Pair, PathBuf, String)> = Vec::new();
+    for file in &args.pairs {
+        let root = file.parent().map(Path::to_path_buf).unwrap_or_default();
+        let source = file.file_name().map_or_else(
+            || file.display().to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        );
+        pairs.extend(
+            read_pairs(file)?
+                .into_iter()
+                .filter(|p| args.only == "all" || p.confidence == Confidence::Ok)
+                .filter(|p| {
+                    args.folder
+                        .as_ref()
+                        .is_none_or(|f| p.folder.contains(f.as_str()))
+                })
+                .map(|p| (p, root.clone(), source.clone())),
+        );
+    }
+    let files: Vec<String> = args.pairs.iter().map(|f| f.display().to_string()).collect();
     if pairs.is_empty() {
         return Err(format!(
             "{}: no pair is selected by --only and --folder",
-            args.pairs.display()
+            files.join(", ")
         ));
     }
     // The page and the table are reserved before any pair is rendered.
     let mut csv_file = PendingFile::reserve(&args.out.join("lookalike.csv"))?;
     let index = args.out.join("index.html");
     let mut index_file = PendingFile::reserve(&index)?;
-    refuse_inputs(
-        &[&csv_file, &index_file],
-        &[("the pairs file", args.pairs.as_path())],
-    )?;
+    let inputs: Vec<(&str, &Path)> = args
+        .pairs
+        .iter()
+        .map(|f| ("the pairs file", f.as_path()))
+        .collect();
+    refuse_inputs(&[&csv_file, &index_file], &inputs)?;
     let images = args.out.join("images");
     std::fs::create_dir_all(&images)
         .map_err(|e| format!("{}: cannot create directory: {e}", images.display()))?;
@@ -92,7 +103,7 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
     let started = Instant::now();
     let mut slugs = HashSet::new();
     let mut rows = Vec::with_capacity(pairs.len());
-    for (index, pair) in pairs.iter().enumerate() {
+    for (index, (pair, root, source)) in pairs.iter().enumerate() {
         let mut slug = pair.slug();
         for n in 2.. {
             if slugs.insert(slug.clone()) {
@@ -110,7 +121,8 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
         );
         let job = PairJob {
             pair,
-            root: &root,
+            root,
+            source,
             images: &images,
             slug,
             sampling: &sampling,
@@ -141,7 +153,7 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
         rows.push(row);
     }
     let run = RunDescription {
-        pairs_file: args.pairs.display().to_string(),
+        pairs_file: files.join(", "),
         width: args.width as usize,
         spp: args.spp,
         settings: format!(
@@ -171,6 +183,8 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
 struct PairJob<'a> {
     pair: &'a Pair,
     root: &'a Path,
+    /// The name of the pairs file it comes from.
+    source: &'a str,
     images: &'a Path,
     slug: String,
     sampling: &'a SamplingOptions,
@@ -193,6 +207,7 @@ impl PairJob<'_> {
         let (dialect, look) = scene.unzip();
         Row {
             pair: self.pair.clone(),
+            source: self.source.to_string(),
             slug: self.slug.clone(),
             dialect,
             look,
@@ -271,6 +286,7 @@ impl PairJob<'_> {
         let (dialect, look) = dialect.unzip();
         Row {
             pair: self.pair.clone(),
+            source: self.source.to_string(),
             slug: self.slug.clone(),
             dialect,
             look,

@@ -32,7 +32,7 @@ use pathtracer::image_io::{Encoding, Tonemap, is_hdr};
 use pathtracer::integrator::Integrator;
 use pathtracer::integrator::sppm::PhotonSettings;
 use pathtracer::limits::{MAX_IMAGE_SIDE, MAX_PATH_DEPTH, MemoryBudget};
-use pathtracer::look::{Look, PixelSampling};
+use pathtracer::look::Look;
 use pathtracer::render::RenderSettings;
 use pathtracer::render_scene::RenderScene;
 use pathtracer::sampler::SamplerKind;
@@ -169,8 +169,9 @@ pub struct SamplingOptions {
     #[arg(long)]
     pub no_light_paths: bool,
     /// The conventions of the rendering: one coursework renderer's
-    /// (`pa1`, `cambrian`, `wso`, `osb`, `ylc`, `yzc`; by photon mapping
-    /// `tsc`, `jms`, `alz-sppm`, `yzc-sppm`), the ported renderer's
+    /// (`pa1`, `han`, `jef`, `emj`, `cambrian`, `wso`, `osb`, `ylc`, `yzc`,
+    /// `cyy`, `cav`; by photon mapping `tsc`, `jms`, `alz-sppm`, `yzc-sppm`),
+    /// the ported renderer's
     /// (`original`) or this project's physically based one (`physical`).
     /// Default: the look of the renderer that wrote the scene, by its
     /// dialect and fingerprints.
@@ -247,8 +248,9 @@ impl SamplingOptions {
     pub fn settings(&self, scene: &Scene, spp: u32, progress: bool) -> RenderSettings {
         let (look, _) = self.look(scene);
         let integrator = self.integrator.unwrap_or(look.integrator);
-        // Ray casting through pixel centres is deterministic: one sample.
-        let spp = if integrator == Integrator::RayCast && look.pixels == PixelSampling::Centre {
+        // Ray casting and tracing through fixed points of the pixels is
+        // deterministic: one sample.
+        let spp = if integrator.is_deterministic() && look.pixels.is_fixed() {
             1
         } else {
             spp

@@ -9,12 +9,13 @@ use std::sync::Arc;
 use clap::Args;
 
 use pathtracer::film::Film;
-use pathtracer::image_io::check_writable;
+use pathtracer::image_io::{DisplayImage, check_writable, read_image};
 use pathtracer::preview::board::Board;
 use pathtracer::preview::passes::{Ended, render_passes};
 use pathtracer::preview::server::{self, Served};
 use pathtracer::preview::status::Status;
 use pathtracer::preview::watch::Watch;
+use pathtracer::preview::{compare, tev};
 use pathtracer::render::{Progress, RenderSettings, Renderer};
 use pathtracer::render_scene::RenderScene;
 
@@ -36,6 +37,15 @@ pub struct ViewArgs {
     /// default output/<scene name>.bmp.
     #[arg(short, long)]
     output: Option<PathBuf>,
+    /// Your own image of the scene (BMP, PNG, JPEG, TGA, PFM or EXR): shown
+    /// beside ours, with the look-alike figures and the FLIP heat map,
+    /// measured again as the render converges.
+    #[arg(long, value_name = "IMAGE")]
+    against: Option<PathBuf>,
+    /// Also stream the film to the tev image viewer listening at
+    /// HOST:PORT (tev's default: 127.0.0.1:14158).
+    #[arg(long, value_name = "HOST:PORT")]
+    display: Option<String>,
     /// Where the page's exposure, tone curve and gamma start.
     #[command(flatten)]
     encoding: EncodingOptions,
@@ -98,7 +108,20 @@ pub fn run(args: &ViewArgs) -> Result<(), String> {
         .clone()
         .unwrap_or_else(|| default_output(&args.scene, ".bmp"));
     check_writable(&output, 1, 1)?;
+    // Theirs as 8-bit values: a file's own bytes, or for linear radiance
+    // the bytes `render -o x.png` would write.
+    let theirs = match &args.against {
+        Some(path) => Some(DisplayImage::from_image(&read_image(path)?)),
+        None => None,
+    };
     let board = Arc::new(Board::default());
+    if let (Some(theirs), Some(path)) = (theirs, &args.against) {
+        compare::start(board.clone(), theirs, path.display().to_string())?;
+    }
+    if let Some(address) = &args.display {
+        let name = format!("pathtracer view {}", args.scene.display());
+        tev::start(board.clone(), tev::connect(address)?, name)?;
+    }
     let mut status = Status {
         scene: args.scene.display().to_string(),
         exposure: encoding.exposure,
@@ -120,7 +143,13 @@ pub fn run(args: &ViewArgs) -> Result<(), String> {
         watch.mark();
         let rendered = Prepared::load(args).and_then(|mut prepared| {
             watch.watch(prepared.files.clone());
-            board.set_inputs(&prepared.files);
+            let inputs: Vec<PathBuf> = prepared
+                .files
+                .iter()
+                .chain(&args.against)
+                .cloned()
+                .collect();
+            board.set_inputs(&inputs);
             status.render += 1;
             status.width = prepared.settings.width;
             status.height = prepared.settings.height;

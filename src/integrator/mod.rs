@@ -11,6 +11,7 @@ pub mod scatter;
 pub mod split;
 pub mod sppm;
 pub mod volpath;
+pub mod whitted;
 
 use crate::color::Color;
 use crate::math::Ray;
@@ -51,6 +52,10 @@ impl Integrator {
             Integrator::Path if scene.media() => volpath::radiance(scene, ray, sampler),
             Integrator::Path => return path::radiance(scene, ray, sample, sampler, splats, log),
             Integrator::RayCast => raycast::radiance(scene, ray),
+            Integrator::Whitted => whitted::radiance_shadowed(scene, ray, scene.max_depth()),
+            Integrator::WhittedUnshadowed => {
+                whitted::radiance_unshadowed(scene, ray, scene.max_depth())
+            }
             // Photon mapping renders whole passes (`photon_render`), not
             // camera samples: `Renderer::new` refuses it. A camera sample
             // gets the path integrator's estimate, the image SPPM converges to.

@@ -82,7 +82,7 @@ pub fn radiance(
             wi: scattered.wi,
             weight: scattered.weight,
             pdf: scattered.pdf,
-            delta: scattered.delta,
+            flags: scattered.flags,
             throughput,
         });
         if throughput.is_black() {

@@ -32,7 +32,7 @@
 //! `1 / SPLIT`, and the probes add the rest. The PA1 point and directional lights are added at every
 //! vertex, as the original does.
 
-use crate::bsdf::{Bsdf, GlassChoice, LobeSet};
+use crate::bsdf::{Bsdf, BsdfFlags, GlassChoice, LobeSet};
 use crate::color::Color;
 use crate::look::Miss;
 use crate::math::{Point3, Ray, Vec3};
@@ -40,6 +40,7 @@ use crate::sampler::Sampler;
 use crate::shading::Shading;
 use crate::spectral::PathSpectrum;
 
+use super::caustics::track::{CausticTrack, camera_track, caustic_track, count_chain_vertex};
 use super::caustics::{self, CausticVertex};
 use super::path_log::{PathEvent, PathLog, Term};
 use super::scatter::{bsdf_at, emitter_choice, miss, pa1_lights, sample};
@@ -63,38 +64,6 @@ struct SmoothOrigin {
     /// Whether the vertex's continuous part is Lambert (light subpaths
     /// connect to such vertices only).
     lambert: bool,
-}
-
-/// The path tracer's side of a caustic connection: the last Lambert vertex
-/// `y` that a bounce from a Lambert vertex `x` found, and the specular
-/// vertices since.
-#[derive(Clone, Copy)]
-struct CausticTrack {
-    /// The path tracer's density of the step that found `y`.
-    edge: Edge,
-    /// Shading-normal correction of `y` for the direction it was left in.
-    shading_ratio: f64,
-    /// Mirror and glass vertices after `y`.
-    chain: u32,
-}
-
-/// The `edge` of a caustic track (see `caustics`).
-#[derive(Clone, Copy)]
-enum Edge {
-    /// `(cos_x / pi) (cos_y / d^2)` of a bounce from a Lambert `x`.
-    Bounce(f64),
-    /// The camera ray found `y` (at `point`, geometric `normal` facing the
-    /// camera): computed when needed, which is rarely.
-    Camera { point: Point3, normal: Vec3 },
-}
-
-impl Edge {
-    fn density(&self, scene: &RenderScene, sample: &CameraSample) -> Option<f64> {
-        match *self {
-            Edge::Bounce(density) => Some(density),
-            Edge::Camera { point, normal } => caustics::camera_edge(scene, sample, &point, &normal),
-        }
-    }
 }
 
 pub fn radiance(
@@ -218,8 +187,8 @@ pub fn radiance(
         add(&mut result, log, depth, Term::DirectLights, None, lights);
         if depth == scene.max_depth()
             && scene.light_sample_ends_paths()
-            && bsdf.lambert().is_some()
-            && bsdf.smooth_probability() >= 1.0
+            && bsdf.diffuse_f().is_some()
+            && bsdf.probability(BsdfFlags::CONTINUOUS) >= 1.0
         {
             // The last vertex: its bounce could only find emission, which
             // the light sample then counts alone (weight 1, no MIS).
@@ -244,7 +213,7 @@ pub fn radiance(
         // Where the ray that found this vertex came from (for the caustic track).
         let arrived_from = origin.take();
         let split_here = split::splits(scene, depth, arrived_from.is_none());
-        if split_here && bsdf.smooth_probability() > 0.0 {
+        if split_here && bsdf.probability(BsdfFlags::CONTINUOUS) > 0.0 {
             let chain = throughput
                 * split::chain_emission(
                     scene, &at, &bsdf, &wo, depth, ray.time, sampler, &spectrum,
@@ -252,21 +221,21 @@ pub fn radiance(
             add(&mut result, log, depth, Term::SplitChain, None, chain);
         }
         let direction = scattered.wi;
-        if scattered.delta {
-            if caustics::crosses_nonreciprocal(&at, &scattered.wi) {
+        if scattered.is_delta() {
+            if scattered.flags.contains(BsdfFlags::NONRECIPROCAL) {
                 track = None;
             }
             count_chain_vertex(&mut track);
             delta_run += 1;
         } else {
             delta_run = 0;
-            let smooth = bsdf.smooth_probability();
+            let smooth = bsdf.probability(BsdfFlags::CONTINUOUS);
             let direct = throughput
                 * light_sample(
                     scene, &at, &bsdf, &wo, smooth, ray.time, sampler, &spectrum, true,
                 );
             add(&mut result, log, depth, Term::LightSample, None, direct);
-            let lambert = bsdf.lambert();
+            let lambert = bsdf.diffuse_f();
             if let Some(f) = lambert
                 && let Some(y) = light_path.filter(|y| depth + 1 + y.chain <= scene.max_depth())
             {
@@ -275,7 +244,9 @@ pub fn radiance(
             }
             track = match arrived_from {
                 _ if !scene.light_paths() || lambert.is_none() => None,
-                Some(from) if from.lambert => caustic_track(&from, &at, &ray, &direction),
+                Some(from) if from.lambert => {
+                    caustic_track(&from.point, from.pdf, &at, &ray, &direction)
+                }
                 None if depth == 1 => camera_track(&at, &direction),
                 _ => None,
             };
@@ -296,7 +267,7 @@ pub fn radiance(
             wi: direction,
             weight: scattered.weight,
             pdf: scattered.pdf,
-            delta: scattered.delta,
+            flags: scattered.flags,
             throughput,
         });
         if spectrum.is_dark(&throughput) {
@@ -348,55 +319,6 @@ fn add(
         mis_weight,
         value,
     });
-}
-
-/// The caustic track of a diffuse vertex `at` (as `y`) reached by `ray` from
-/// the diffuse vertex `from` (as `x`) and left in `direction`; `None` where
-/// a caustic connection could not make the path.
-fn caustic_track(
-    from: &SmoothOrigin,
-    at: &Shading,
-    ray: &Ray,
-    direction: &Vec3,
-) -> Option<CausticTrack> {
-    let distance_squared = (from.point - at.point).norm_squared();
-    let edge = caustics::edge_density(
-        from.pdf,
-        at.geometric.dot(&-ray.direction),
-        distance_squared,
-    )?;
-    Some(CausticTrack {
-        edge: Edge::Bounce(edge),
-        shading_ratio: shading_ratio(at, direction)?,
-        chain: 0,
-    })
-}
-
-/// The caustic track of the camera ray's first vertex `at` (as `y`), left
-/// in `direction`; `None` where light tracing could not make the path.
-fn camera_track(at: &Shading, direction: &Vec3) -> Option<CausticTrack> {
-    Some(CausticTrack {
-        edge: Edge::Camera {
-            point: at.point,
-            normal: at.geometric,
-        },
-        shading_ratio: shading_ratio(at, direction)?,
-        chain: 0,
-    })
-}
-
-/// `cos_shading / cos_geometric` of a direction leaving `at` on the side of
-/// its oriented normals; `None` on the other side.
-fn shading_ratio(at: &Shading, direction: &Vec3) -> Option<f64> {
-    let geometric = at.geometric.dot(direction);
-    let ratio = at.normal.dot(direction) / geometric;
-    (geometric > 0.0 && ratio > 0.0 && ratio.is_finite()).then_some(ratio)
-}
-
-fn count_chain_vertex(track: &mut Option<CausticTrack>) {
-    if let Some(track) = track {
-        track.chain += 1;
-    }
 }
 
 /// The lobes of `bsdf` (dispersive) at the path's wavelength, splitting

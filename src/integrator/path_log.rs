@@ -8,7 +8,7 @@
 
 use std::fmt;
 
-use crate::bsdf::LobeSet;
+use crate::bsdf::{BsdfFlags, LobeSet};
 use crate::color::Color;
 use crate::math::{Point3, Vec3};
 
@@ -104,7 +104,8 @@ pub enum PathEvent {
         /// `f |cos| / pdf`, with the lobe choice.
         weight: Color,
         pdf: f64,
-        delta: bool,
+        /// The kind of the lobe it chose.
+        flags: BsdfFlags,
         /// The throughput after this vertex.
         throughput: Color,
     },
@@ -155,12 +156,12 @@ impl fmt::Display for PathEvent {
                 wi,
                 weight,
                 pdf,
-                delta,
+                flags,
                 throughput,
             } => write!(
                 f,
                 "  scattered at {depth}: {} wi ({}), weight {}, pdf {pdf:.6}, throughput {}",
-                if *delta { "delta" } else { "continuous" },
+                kinds(*flags),
                 vector(wi.x, wi.y, wi.z),
                 color(weight),
                 color(throughput)
@@ -174,6 +175,24 @@ impl fmt::Display for PathEvent {
             PathEvent::Ended { depth, why } => write!(f, "ended at {depth}: {why}"),
         }
     }
+}
+
+/// The names of the kinds in `flags`.
+fn kinds(flags: BsdfFlags) -> String {
+    let names = [
+        (BsdfFlags::SPECULAR, "specular (delta)"),
+        (BsdfFlags::DIFFUSE, "diffuse"),
+        (BsdfFlags::GLOSSY, "glossy"),
+        (BsdfFlags::REFLECTION, "reflection"),
+        (BsdfFlags::TRANSMISSION, "transmission"),
+        (BsdfFlags::NONRECIPROCAL, "non-reciprocal"),
+    ];
+    let named: Vec<&str> = names
+        .iter()
+        .filter(|(kind, _)| flags.contains(*kind))
+        .map(|(_, name)| *name)
+        .collect();
+    named.join(" ")
 }
 
 fn vector(x: f64, y: f64, z: f64) -> String {

@@ -2,7 +2,7 @@
 //! contract: build the BSDF of a hit, sample it spending sample dimensions
 //! only on what it reads, pick an emitter, and add the PA1 lights.
 
-use crate::bsdf::{Bsdf, BsdfSample, GlassChoice, Rules};
+use crate::bsdf::{Bsdf, BsdfFlags, BsdfSample, GlassChoice, Rules};
 use crate::color::Color;
 use crate::look::Miss;
 use crate::math::Vec3;
@@ -35,12 +35,11 @@ pub fn bsdf_at<'a>(
 /// reads nothing), so that the stratified dimensions go to real choices.
 #[inline(always)]
 pub fn sample(bsdf: &Bsdf, wo: &Vec3, sampler: &mut Sampler) -> Option<BsdfSample> {
-    let uc = if bsdf.reads_choice() {
-        sampler.next_f64()
-    } else {
-        0.5
-    };
-    let u = if bsdf.reads_direction() {
+    let flags = bsdf.flags();
+    let choice =
+        bsdf.set().len() > 1 || flags.contains(BsdfFlags::REFLECTION | BsdfFlags::TRANSMISSION);
+    let uc = if choice { sampler.next_f64() } else { 0.5 };
+    let u = if flags.intersects(BsdfFlags::CONTINUOUS) {
         sampler.next_2d()
     } else {
         [0.5, 0.5]

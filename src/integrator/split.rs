@@ -78,7 +78,7 @@ pub fn chain_emission(
         let Some(bounce) = sample(bsdf, wo, &mut sampler) else {
             continue;
         };
-        if bounce.delta {
+        if bounce.is_delta() {
             continue;
         }
         let weight = spectrum.factor(bounce.weight);
@@ -137,7 +137,7 @@ fn follow_chain(
         let Some(next) = sample(&here_bsdf, &towards, sampler) else {
             break;
         };
-        if !next.delta {
+        if !next.is_delta() {
             break;
         }
         weight *= spectrum.factor(next.weight);

@@ -25,7 +25,7 @@
 
 use std::f64::consts::PI;
 
-use crate::bsdf::{Bsdf, GlassChoice};
+use crate::bsdf::{Bsdf, BsdfFlags, GlassChoice};
 use crate::color::Color;
 use crate::lights::LightSample;
 use crate::math::{Point3, Ray, Vec3};
@@ -131,8 +131,8 @@ pub fn radiance(scene: &RenderScene, mut ray: Ray, sampler: &mut Sampler) -> Col
         };
         let direction = scattered.wi;
         origin = None;
-        if !scattered.delta {
-            let smooth = bsdf.smooth_probability();
+        if !scattered.is_delta() {
+            let smooth = bsdf.probability(BsdfFlags::CONTINUOUS);
             let light = sample_light(scene, &at.point, ray.time, sampler);
             if let Some(light) = light {
                 let reflected = bsdf.eval(&wo, &light.direction);

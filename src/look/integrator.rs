@@ -19,18 +19,38 @@ pub enum Integrator {
     /// and directional light, `kd max(0, n.l) + ks max(0, v.r)^shininess`,
     /// no shadows, nothing else (the PA1 look's).
     RayCast,
+    /// Whitted-style ray tracing with shadow rays: Phong per light where a
+    /// shadow ray reaches it (the background colour where none does), the
+    /// mirror and refracted rays by the material's fixed weights (jefflyy's;
+    /// see `integrator::whitted`).
+    Whitted,
+    /// Whitted-style ray tracing without shadow rays, the mirror ray by
+    /// Schlick's weight times `specularColor` and the refracted ray by the
+    /// rest, at index 1 (emily-jia's; see `integrator::whitted`).
+    WhittedUnshadowed,
     /// Stochastic progressive photon mapping (see `integrator::sppm`):
     /// passes of visible points and photons, rendered by `sppm::render`.
     Sppm,
 }
 
 impl Integrator {
-    pub const ALL: [Integrator; 4] = [
+    pub const ALL: [Integrator; 6] = [
         Integrator::Path,
         Integrator::Original,
         Integrator::RayCast,
         Integrator::Sppm,
+        Integrator::Whitted,
+        Integrator::WhittedUnshadowed,
     ];
+
+    /// Whether it draws no random numbers: one camera ray through a fixed
+    /// point of each pixel gives the whole image.
+    pub fn is_deterministic(self) -> bool {
+        matches!(
+            self,
+            Integrator::RayCast | Integrator::Whitted | Integrator::WhittedUnshadowed
+        )
+    }
 
     /// The command-line name.
     pub fn name(self) -> &'static str {
@@ -38,6 +58,8 @@ impl Integrator {
             Integrator::Original => "original",
             Integrator::Path => "path",
             Integrator::RayCast => "raycast",
+            Integrator::Whitted => "whitted",
+            Integrator::WhittedUnshadowed => "whitted-unshadowed",
             Integrator::Sppm => "sppm",
         }
     }

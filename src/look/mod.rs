@@ -30,6 +30,7 @@ pub mod detect;
 mod integrator;
 mod mist;
 mod photons;
+mod rows;
 pub use integrator::Integrator;
 pub use mist::{Mist, cambrian_mean_cosine};
 pub use photons::{PhotonLook, SeenEmission};
@@ -91,6 +92,17 @@ pub enum PixelSampling {
     Tent,
     /// One ray through the pixel centre.
     Centre,
+    /// One ray through the pixel's corner, its integer coordinate (the
+    /// renderers that pass `(x, y)` to the framework's camera without
+    /// adding 0.5: hanna0911, emily-jia, jefflyy).
+    Corner,
+}
+
+impl PixelSampling {
+    /// Whether every camera ray of a pixel goes through the same point.
+    pub fn is_fixed(self) -> bool {
+        matches!(self, PixelSampling::Centre | PixelSampling::Corner)
+    }
 }
 
 /// Which image row a texture coordinate v reads.
@@ -155,140 +167,7 @@ pub struct Look {
     pub photons: Option<PhotonLook>,
 }
 
-/// Scattering vertices that stand for "no limit": Russian roulette ends
-/// paths long before.
-const UNLIMITED: u32 = 64;
-
 impl Look {
-    pub const ORIGINAL: Look = Look {
-        name: "original",
-        renderer: "the ported renderer",
-        integrator: Integrator::Path,
-        max_depth: 5,
-        miss: Miss::CameraBackground,
-        point_lights: PointLights::WithoutEmitters,
-        phong_lobes: true,
-        fresnel: DielectricFresnel::Schlick,
-        pixels: PixelSampling::Tent,
-        one_sided_planes: false,
-        texture_times_color: false,
-        texture_rows: TextureRows::Up,
-        fov_axis: None,
-        texture_frames: TextureFrames::Shapes,
-        ray_origins: RayOrigins::Offset,
-        osb_glossy: false,
-        lens_shape: None,
-        dispersion_sensor: DispersionSensor::Spectral,
-        sphere_test: SphereTest::Robust,
-        photons: None,
-    };
-
-    pub const PHYSICAL: Look = Look {
-        name: "physical",
-        renderer: "this project's physically based rendering",
-        miss: Miss::Weighted,
-        fresnel: DielectricFresnel::Exact,
-        ..Look::ORIGINAL
-    };
-
-    pub const PA1: Look = Look {
-        name: "pa1",
-        renderer: "the course framework's ray caster",
-        integrator: Integrator::RayCast,
-        max_depth: 1,
-        miss: Miss::CameraBackground,
-        pixels: PixelSampling::Centre,
-        ..Look::ORIGINAL
-    };
-
-    pub const CAMBRIAN: Look = Look {
-        name: "cambrian",
-        renderer: "Cambrian-yzt/PathTracer",
-        max_depth: UNLIMITED,
-        miss: Miss::Black,
-        point_lights: PointLights::Never,
-        phong_lobes: false,
-        texture_times_color: true,
-        texture_frames: TextureFrames::Cambrian,
-        dispersion_sensor: DispersionSensor::Cambrian,
-        sphere_test: SphereTest::Cambrian,
-        ..Look::ORIGINAL
-    };
-
-    pub const WSO: Look = Look {
-        name: "wso",
-        renderer: "W-Solaris/computer-graphics (the D3 family's path tracer)",
-        integrator: Integrator::Original,
-        ray_origins: RayOrigins::AtHit,
-        lens_shape: Some(LensShape::Square),
-        max_depth: 14,
-        miss: Miss::Unweighted,
-        point_lights: PointLights::Never,
-        phong_lobes: false,
-        one_sided_planes: true,
-        ..Look::ORIGINAL
-    };
-
-    pub const OSB: Look = Look {
-        name: "osb",
-        renderer: "one-step-beh1nd/THU2024Spring-CG-Final",
-        max_depth: UNLIMITED,
-        miss: Miss::Black,
-        point_lights: PointLights::Never,
-        phong_lobes: false,
-        fresnel: DielectricFresnel::SmallptUnweighted,
-        osb_glossy: true,
-        ..Look::ORIGINAL
-    };
-
-    pub const YLC: Look = Look {
-        name: "ylc",
-        renderer: "ylc2001/Computational-Graphics-Final-Project",
-        max_depth: UNLIMITED,
-        miss: Miss::Unweighted,
-        point_lights: PointLights::Never,
-        phong_lobes: false,
-        ..Look::ORIGINAL
-    };
-
-    pub const CYY: Look = Look {
-        name: "cyy",
-        renderer: "Chenyu-Yang-2000/PathTracing",
-        point_lights: PointLights::Always,
-        ..Look::ORIGINAL
-    };
-
-    pub const YZC: Look = Look {
-        name: "yzc",
-        renderer: "yuzc19/Ray-tracing-engine",
-        fov_axis: Some(FovAxis::Horizontal),
-        lens_shape: Some(LensShape::Square),
-        max_depth: 11,
-        miss: Miss::Weighted,
-        point_lights: PointLights::Never,
-        phong_lobes: false,
-        one_sided_planes: true,
-        texture_rows: TextureRows::Down,
-        ..Look::ORIGINAL
-    };
-
-    /// Every look, by name.
-    pub const ALL: [Look; 13] = [
-        Look::ORIGINAL,
-        Look::PHYSICAL,
-        Look::PA1,
-        Look::CAMBRIAN,
-        Look::WSO,
-        Look::OSB,
-        Look::YLC,
-        Look::YZC,
-        Look::CYY,
-        Look::TSC,
-        Look::JMS,
-        Look::ALZ_SPPM,
-        Look::YZC_SPPM,
-    ];
-
     /// The scene's camera as this look reads it.
     pub fn camera(&self, camera: &CameraDesc) -> CameraDesc {
         let mut camera = camera.clone();

@@ -24,6 +24,8 @@ pub struct Figures {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Row {
     pub pair: Pair,
+    /// The name of the pairs file the pair comes from.
+    pub source: String,
     /// File-name-safe name; the images are `images/<slug>.{ours,theirs,diff}.png`.
     pub slug: String,
     /// The scene's detected dialect and the look it was rendered in, once
@@ -63,8 +65,33 @@ pub struct RunDescription {
 }
 
 /// `N of M ok pairs look the same`, and the doubtful pairs' count when
-/// there are any, and how many failed.
+/// there are any, and how many failed; with pairs of several files, that
+/// for each file, `pairs.tsv: ...; oracle-pairs.tsv: ...`.
 pub fn summary(rows: &[Row]) -> String {
+    let mut sources: Vec<&str> = Vec::new();
+    for row in rows {
+        if !sources.contains(&row.source.as_str()) {
+            sources.push(&row.source);
+        }
+    }
+    if sources.len() < 2 {
+        return summary_of(rows);
+    }
+    let parts: Vec<String> = sources
+        .iter()
+        .map(|source| {
+            let of: Vec<Row> = rows
+                .iter()
+                .filter(|r| r.source == *source)
+                .cloned()
+                .collect();
+            format!("{source}: {}", summary_of(&of))
+        })
+        .collect();
+    parts.join("; ")
+}
+
+fn summary_of(rows: &[Row]) -> String {
     let count = |confidence: Confidence| {
         let of: Vec<&Row> = rows
             .iter()
@@ -88,7 +115,7 @@ pub fn summary(rows: &[Row]) -> String {
 /// The CSV file: a header line, then one line per row.
 pub fn csv(rows: &[Row]) -> String {
     let mut text = String::from(
-        "name,folder,scene,render,confidence,dialect,look,width,height,reference_pixels,seconds,mean,p95,verdict,flip,aspect_differs,error\n",
+        "name,folder,scene,render,confidence,dialect,look,width,height,reference_pixels,seconds,mean,p95,verdict,flip,aspect_differs,error,pairs_file\n",
     );
     for row in rows {
         let pair = &row.pair;
@@ -127,6 +154,7 @@ pub fn csv(rows: &[Row]) -> String {
             flip,
             aspect,
             error,
+            row.source.clone(),
         ];
         let quoted: Vec<String> = fields.iter().map(|f| csv_field(f)).collect();
         text.push_str(&quoted.join(","));
@@ -186,11 +214,15 @@ pub fn html(rows: &[Row], run: &RunDescription) -> String {
         run.spp,
         escape(&run.settings)
     );
+    page.push_str(&by_renderer(rows));
     page.push_str(
         "<table>\n<tr><th>pair</th><th>ours</th><th>theirs</th><th>error map</th><th>mean</th><th>p95</th>\
          <th>verdict</th><th>FLIP</th><th>seconds</th><th>dialect</th><th>look</th></tr>\n",
     );
-    for row in rows {
+    // Grouped by renderer (folder), in the files' order within each.
+    let mut grouped: Vec<&Row> = rows.iter().collect();
+    grouped.sort_by(|a, b| a.pair.folder.cmp(&b.pair.folder));
+    for row in grouped {
         let pair = &row.pair;
         let image = |kind: &str| {
             format!(
@@ -252,12 +284,48 @@ pub fn html(rows: &[Row], run: &RunDescription) -> String {
     page
 }
 
+/// A table of each renderer (folder) and pairs file: how many of its `ok`
+/// pairs look the same, and the looks they were rendered in.
+fn by_renderer(rows: &[Row]) -> String {
+    let mut keys: Vec<(&str, &str)> = rows
+        .iter()
+        .map(|r| (r.pair.folder.as_str(), r.source.as_str()))
+        .collect();
+    keys.sort();
+    keys.dedup();
+    let mut table = String::from(
+        "<table>\n<tr><th>renderer (folder)</th><th>pairs file</th><th>ok pairs the same</th><th>looks</th></tr>\n",
+    );
+    for (folder, source) in keys {
+        let of: Vec<&Row> = rows
+            .iter()
+            .filter(|r| r.pair.folder == folder && r.source == source)
+            .filter(|r| r.pair.confidence == Confidence::Ok)
+            .collect();
+        let same = of.iter().filter(|r| r.looks_the_same()).count();
+        let mut looks: Vec<&str> = of.iter().filter_map(|r| r.look.as_deref()).collect();
+        looks.sort();
+        looks.dedup();
+        let _ = writeln!(
+            table,
+            "<tr><td>{}</td><td>{}</td><td>{same} of {}</td><td>{}</td></tr>",
+            escape(folder),
+            escape(source),
+            of.len(),
+            escape(&looks.join(", "))
+        );
+    }
+    table.push_str("</table>\n<p></p>\n");
+    table
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn row(confidence: Confidence, outcome: Result<Figures, String>) -> Row {
         Row {
+            source: "pairs.tsv".to_string(),
             pair: Pair {
                 folder: "repo/a+b".to_string(),
                 base: ".".to_string(),
@@ -304,6 +372,17 @@ mod tests {
     }
 
     #[test]
+    fn pairs_of_several_files_are_summed_up_file_by_file() {
+        let mut oracle = row(Confidence::Ok, Ok(figures(false)));
+        oracle.source = "oracle-pairs.tsv".to_string();
+        let rows = [row(Confidence::Ok, Ok(figures(true))), oracle];
+        assert_eq!(
+            summary(&rows),
+            "pairs.tsv: 1 of 1 ok pairs look the same; oracle-pairs.tsv: 0 of 1 ok pairs look the same"
+        );
+    }
+
+    #[test]
     fn csv_has_one_line_per_row_with_every_column_and_quotes_what_needs_it() {
         let rows = [
             row(Confidence::Ok, Ok(figures(true))),
@@ -316,7 +395,7 @@ mod tests {
         assert_eq!(lines[1].split(',').count(), columns);
         assert!(lines[1].contains(",160,80,200x100,1.25,1.000,3.000,same,0.10000,false,"));
         assert!(
-            lines[2].ends_with(",failed,,,\"x.txt:3:4: \"\"a\"\", b\""),
+            lines[2].ends_with(",failed,,,\"x.txt:3:4: \"\"a\"\", b\",pairs.tsv"),
             "{}",
             lines[2]
         );
@@ -335,7 +414,9 @@ mod tests {
             settings: "path".to_string(),
         };
         let page = html(&rows, &run);
-        assert_eq!(page.matches("<tr><td>").count(), 2);
+        // One row per pair, and one for the renderer in the table by renderer.
+        assert_eq!(page.matches("<tr><td>repo/a+b<br>").count(), 2);
+        assert!(page.contains("<tr><td>repo/a+b</td><td>pairs.tsv</td><td>0 of 2</td>"));
         assert!(page.contains("images/repo-a-b__x.ours.png"));
         assert!(page.contains("images/repo-a-b__x.diff.png"));
         assert!(page.contains("&lt;missing&gt; &amp; gone"));

@@ -12,6 +12,7 @@ use std::time::Duration;
 
 use crate::image_io::Image;
 
+use super::compare::Compared;
 use super::frame;
 use super::status::Status;
 
@@ -25,6 +26,18 @@ pub struct Posted {
     /// The same film as an image, for the save button.
     pub image: Option<Arc<Image>>,
     pub status: Status,
+    /// The last measure against `--against`'s image.
+    pub compared: Option<Arc<Compared>>,
+}
+
+impl Posted {
+    /// What an event says: the status, with the comparison's figures as
+    /// `against` (null without one).
+    pub fn to_json(&self) -> String {
+        let status = self.status.to_json();
+        let against = self.compared.as_ref().map_or("null", |c| c.json.as_str());
+        format!("{}, \"against\": {against}}}", &status[..status.len() - 1])
+    }
 }
 
 /// Shared between the render loop and the server's connections.
@@ -66,6 +79,15 @@ impl Board {
         let mut posted = self.lock();
         posted.generation += 1;
         change(&mut posted.status);
+        drop(posted);
+        self.changed.notify_all();
+    }
+
+    /// Replaces the comparison and wakes the readers.
+    pub fn set_compared(&self, compared: Compared) {
+        let mut posted = self.lock();
+        posted.generation += 1;
+        posted.compared = Some(Arc::new(compared));
         drop(posted);
         self.changed.notify_all();
     }

@@ -10,6 +10,7 @@
 //! connections come ([`server::MAX_CONNECTIONS`], one frame held).
 
 pub mod board;
+pub mod compare;
 pub mod frame;
 pub mod http;
 pub mod passes;
@@ -17,4 +18,5 @@ pub mod routes;
 pub mod save;
 pub mod server;
 pub mod status;
+pub mod tev;
 pub mod watch;

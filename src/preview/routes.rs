@@ -17,6 +17,10 @@ pub enum Route {
     Status,
     /// POST: write the image to the output file.
     Save,
+    /// `--against`'s image at our size, and the FLIP map (display frames,
+    /// see [`super::compare::display_frame`]).
+    Against,
+    Heat,
 }
 
 impl Route {
@@ -30,6 +34,8 @@ impl Route {
             "/film" => Route::Film,
             "/status" => Route::Status,
             "/save" => Route::Save,
+            "/against" => Route::Against,
+            "/heat" => Route::Heat,
             _ => return None,
         })
     }

@@ -136,7 +136,7 @@ fn answer(
             routes::STYLE.as_bytes(),
         ),
         Route::Status => {
-            let json = board.now().status.to_json();
+            let json = board.now().to_json();
             http::respond(stream, "200 OK", "application/json", json.as_bytes())
         }
         Route::Film => match board.now().frame {
@@ -145,6 +145,18 @@ fn answer(
         },
         Route::Events => stream_events(stream, board),
         Route::Save => save_image(stream, request, served, port),
+        Route::Against | Route::Heat => {
+            let frame = board.now().compared.map(|c| match route {
+                Route::Against => c.theirs.clone(),
+                _ => c.heat.clone(),
+            });
+            match frame {
+                Some(frame) if !frame.is_empty() => {
+                    http::respond(stream, "200 OK", "application/octet-stream", &frame)
+                }
+                _ => http::refuse(stream, "404 Not Found", "no --against image measured"),
+            }
+        }
     }
 }
 
@@ -186,13 +198,13 @@ fn save_image(
 fn stream_events(stream: &mut TcpStream, board: &Board) -> std::io::Result<()> {
     http::start_events(stream)?;
     let now = board.now();
-    http::event(stream, &now.status.to_json())?;
+    http::event(stream, &now.to_json())?;
     let mut seen = now.generation;
     loop {
         match board.after(seen, KEEP_ALIVE) {
             Some(posted) => {
                 seen = posted.generation;
-                http::event(stream, &posted.status.to_json())?;
+                http::event(stream, &posted.to_json())?;
             }
             None => http::keep_alive(stream)?,
         }

@@ -33,6 +33,8 @@ pub struct Scene {
     /// their own (a top-level `Medium` block, or the camera's `mist`).
     pub medium: Option<Medium>,
     pub dialect: Dialect,
+    /// The scene file's path, as given (empty for scenes built in code).
+    pub source: std::path::PathBuf,
     /// The file's distinct field and block names, sorted (what look
     /// detection reads, see `look::detect`).
     pub words: Vec<String>,
@@ -85,6 +87,7 @@ impl Scene {
             root,
             medium: None,
             dialect: Dialect::Canonical,
+            source: std::path::PathBuf::new(),
             words: Vec::new(),
             warnings: Vec::new(),
             load: LoadStats::default(),

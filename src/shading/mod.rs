@@ -66,7 +66,12 @@ impl<'a> Shading<'a> {
     pub fn bsdf(&self, wo: &Vec3, rules: Rules) -> Bsdf<'a> {
         let cos_o = self.normal.dot(wo);
         let set = &self.material.lobes;
-        Bsdf::new(set, self.color, &self.normal, self.entering, cos_o, rules)
+        let bsdf = Bsdf::new(set, self.color, &self.normal, self.entering, cos_o, rules);
+        if self.leaves_from_point {
+            bsdf.on_nonreciprocal(&self.geometric)
+        } else {
+            bsdf
+        }
     }
 
     /// The origin of a ray leaving this point in `direction`, as for the hit

@@ -5,7 +5,7 @@
 use std::f64::consts::PI;
 
 use super::connect::splat_to_camera;
-use crate::bsdf::GlassChoice;
+use crate::bsdf::{BsdfFlags, GlassChoice, TransportMode};
 use crate::color::Color;
 use crate::integrator::Splats;
 use crate::integrator::scatter::{bsdf_at, emitter_choice, sample};
@@ -13,7 +13,6 @@ use crate::math::{Point3, Ray, Vec3, offset_origin};
 use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
 use crate::sampling::cosine_hemisphere;
-use crate::shading::Shading;
 
 /// Salt of the light subpath's sampler (see [`Sampler::fork`]).
 const LIGHT_PATH_SALT: u64 = 0x11A7_C0DE_CA05_71C5;
@@ -91,23 +90,24 @@ pub fn trace(
         let hit = scene.intersect(&ray)?;
         let at = scene.shade(&hit, &ray);
         let towards_light = -ray.direction;
-        let bsdf = bsdf_at(scene, &at, &towards_light, GlassChoice::Fresnel);
+        let bsdf = bsdf_at(scene, &at, &towards_light, GlassChoice::Fresnel)
+            .transporting(TransportMode::Importance);
         if bsdf.is_black() {
             return None;
         }
         // A surface without delta lobes ends the subpath for sure: no
         // direction is drawn for it.
-        let scattered = if bsdf.smooth_probability() >= 1.0 {
+        let scattered = if bsdf.probability(BsdfFlags::CONTINUOUS) >= 1.0 {
             None
         } else {
             Some(sample(&bsdf, &towards_light, &mut sampler)?)
         };
-        let Some(scattered) = scattered.filter(|s| s.delta) else {
+        let Some(scattered) = scattered.filter(|s| s.is_delta()) else {
             if chain == 0 {
                 // Direct light: next-event estimation's business.
                 return None;
             }
-            let lambert = bsdf.lambert()?;
+            let lambert = bsdf.diffuse_f()?;
             let shading_ratio = at.normal.dot(&towards_light) / at.geometric.dot(&towards_light);
             if !(shading_ratio > 0.0 && shading_ratio.is_finite()) {
                 return None;
@@ -115,7 +115,7 @@ pub fn trace(
             let y = CausticVertex {
                 point: at.point,
                 geometric: at.geometric,
-                f: lambert / bsdf.smooth_probability(),
+                f: lambert / bsdf.probability(BsdfFlags::CONTINUOUS),
                 beta: beta * shading_ratio,
                 shading_ratio,
                 emission_density,
@@ -131,9 +131,6 @@ pub fn trace(
             splat_to_camera(scene, camera, &y, lens, splats);
             return Some(y);
         };
-        if crosses_nonreciprocal(&at, &scattered.wi) {
-            return None;
-        }
         beta *= scattered.weight;
         if beta.is_black() {
             return None;
@@ -145,13 +142,4 @@ pub fn trace(
         }
         ray = Ray::new(at.spawn_origin(&direction), direction, time);
     }
-}
-
-/// Whether leaving `at` in `direction` crosses a surface whose transport is
-/// not the same both ways (a sphere under Cambrian's test, whose exit is
-/// taken for an entry): light subpaths do not go there, and camera paths
-/// count such paths alone (see `path`).
-#[inline]
-pub fn crosses_nonreciprocal(at: &Shading, direction: &Vec3) -> bool {
-    at.leaves_from_point && at.geometric.dot(direction) < 0.0
 }

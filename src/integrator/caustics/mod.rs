@@ -40,13 +40,14 @@
 
 mod connect;
 mod light_path;
+pub(crate) mod track;
 
 use crate::math::Vec3;
 use crate::render_scene::RenderScene;
 use crate::world::WorldHit;
 
 pub use connect::{camera_edge, connect, edge_density};
-pub use light_path::{CausticVertex, crosses_nonreciprocal, trace};
+pub use light_path::{CausticVertex, trace};
 
 /// The emission density (see the module documentation) of the light point
 /// of `hit` for light leaving it in unit `direction`. Directions are

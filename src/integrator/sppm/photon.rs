@@ -12,7 +12,7 @@
 
 use std::f64::consts::PI;
 
-use crate::bsdf::GlassChoice;
+use crate::bsdf::{BsdfFlags, GlassChoice};
 use crate::color::Color;
 use crate::integrator::path::ROULETTE_DEPTH;
 use crate::integrator::scatter::{bsdf_at, emitter_choice, sample};
@@ -68,7 +68,7 @@ pub fn trace(
         if bsdf.is_black() {
             return;
         }
-        if bounces >= first_gather && bsdf.smooth_probability() > 0.0 {
+        if bounces >= first_gather && bsdf.probability(BsdfFlags::CONTINUOUS) > 0.0 {
             gather(&PhotonHit {
                 point: at.point,
                 wi: wo,
@@ -83,7 +83,7 @@ pub fn trace(
             return;
         };
         let mut weight = scattered.weight;
-        if !scattered.delta {
+        if !scattered.is_delta() {
             weight *= shading_correction(&at.normal, &at.geometric, &wo, &scattered.wi);
         }
         let before = power;

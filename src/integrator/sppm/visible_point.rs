@@ -6,7 +6,7 @@
 //! point one light sample (direct light; photons bring the rest), except
 //! in a photon-mapping look, whose photons bring the direct light too.
 
-use crate::bsdf::{Bsdf, GlassChoice};
+use crate::bsdf::{Bsdf, BsdfFlags, GlassChoice};
 use crate::color::Color;
 use crate::integrator::path::light_sample;
 use crate::integrator::scatter::{bsdf_at, miss, pa1_lights, sample};
@@ -80,8 +80,8 @@ pub fn trace<'a>(scene: &'a RenderScene, mut ray: Ray, sampler: &mut Sampler) ->
         let Some(scattered) = sample(&bsdf, &wo, sampler) else {
             break;
         };
-        if !scattered.delta {
-            let smooth = bsdf.smooth_probability();
+        if !scattered.is_delta() {
+            let smooth = bsdf.probability(BsdfFlags::CONTINUOUS);
             direct += throughput
                 * light_sample(
                     scene, &at, &bsdf, &wo, smooth, ray.time, sampler, &rgb, false,

@@ -18,13 +18,23 @@ pub enum Evidence {
     Dialect,
     /// At least one of these words, anywhere in the file.
     AnyWord(&'static [&'static str]),
+    /// The file lies in a clone of the renderer's repository: a folder on
+    /// its path is named `owner+repository` (the layout of
+    /// `../shared/reference/coursework/`) or, where the name is the
+    /// renderer's alone (`repository_alone`), `repository`. For renderers
+    /// whose files are another's, word for word.
+    Folder {
+        owner: &'static str,
+        repository: &'static str,
+        repository_alone: bool,
+    },
 }
 
 /// One renderer's fingerprint: a row of [`FINGERPRINTS`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fingerprint {
-    /// The dialect the file must be read in.
-    pub dialect: Dialect,
+    /// The dialects the file may be read in (one of them).
+    pub dialects: &'static [Dialect],
     pub evidence: Evidence,
     /// The look the file then renders in.
     pub look: Look,
@@ -36,16 +46,30 @@ impl Fingerprint {
     /// What of this fingerprint `scene` carries (the dialect's name and the
     /// word found), or `None` when it does not carry it.
     pub fn found_in(&self, scene: &Scene) -> Option<String> {
-        if scene.dialect != self.dialect {
+        if !self.dialects.contains(&scene.dialect) {
             return None;
         }
-        let dialect = format!("{} dialect", self.dialect.name());
+        let dialect = format!("{} dialect", scene.dialect.name());
         match self.evidence {
             Evidence::Dialect => Some(dialect),
             Evidence::AnyWord(words) => words
                 .iter()
                 .find(|word| scene.has_word(word))
                 .map(|word| format!("{dialect} with '{word}'")),
+            Evidence::Folder {
+                owner,
+                repository,
+                repository_alone,
+            } => {
+                let joined = format!("{owner}+{repository}");
+                scene
+                    .source
+                    .ancestors()
+                    .skip(1)
+                    .filter_map(|folder| folder.file_name()?.to_str())
+                    .any(|name| name == joined || (repository_alone && name == repository))
+                    .then(|| format!("{dialect} in a folder of {owner}/{repository}"))
+            }
         }
     }
 }

@@ -17,38 +17,97 @@ use crate::scene::model::Dialect;
 /// Every fingerprint, tried in this order.
 pub const FINGERPRINTS: &[Fingerprint] = &[
     Fingerprint {
-        dialect: Dialect::Pa1,
+        dialects: &[Dialect::Pa1, Dialect::TypeVector],
+        evidence: Evidence::Folder {
+            owner: "hanna0911",
+            repository: "image-renderer",
+            repository_alone: true,
+        },
+        look: Look::HAN,
+        says: "hanna0911's ray caster (its files are the framework's; --look pa1 for pixel centres)",
+    },
+    Fingerprint {
+        dialects: &[Dialect::Pa1],
+        evidence: Evidence::Folder {
+            owner: "emily-jia",
+            repository: "graphic_homework",
+            repository_alone: true,
+        },
+        look: Look::EMJ,
+        says: "emily-jia's Whitted ray tracer (its files are the framework's; --look pa1 for its ray caster)",
+    },
+    Fingerprint {
+        dialects: &[Dialect::Jef],
+        evidence: Evidence::Dialect,
+        look: Look::JEF,
+        says: "jefflyy's Whitted ray tracer",
+    },
+    Fingerprint {
+        dialects: &[Dialect::Pa1],
+        evidence: Evidence::Folder {
+            owner: "jefflyy",
+            repository: "CG_2022spring",
+            repository_alone: true,
+        },
+        look: Look::JEF,
+        says: "jefflyy's Whitted ray tracer (its files are the framework's; --look pa1 for its ray caster)",
+    },
+    Fingerprint {
+        dialects: &[Dialect::Pa1],
         evidence: Evidence::Dialect,
         look: Look::PA1,
         says: "the course framework's ray caster (its materials' own words only: diffuseColor, specularColor, shininess)",
     },
     Fingerprint {
-        dialect: Dialect::Cambrian,
+        dialects: &[Dialect::Cambrian],
         evidence: Evidence::Dialect,
         look: Look::CAMBRIAN,
         says: "Cambrian-yzt's path tracer",
     },
     Fingerprint {
-        dialect: Dialect::TypeVector,
+        dialects: &[Dialect::TypeVector],
         evidence: Evidence::AnyWord(&["DepthCamera", "glossy", "speed"]),
         look: Look::OSB,
         says: "one-step-beh1nd's path tracer",
     },
     Fingerprint {
-        dialect: Dialect::TypeVector,
+        dialects: &[Dialect::TypeVector],
         evidence: Evidence::AnyWord(&["DiskLights", "focal"]),
         look: Look::YLC,
         says: "ylc2001's path tracer",
     },
     Fingerprint {
-        dialect: Dialect::TypeVector,
+        dialects: &[Dialect::TypeVector],
         // yuzc19's renderer has no bump maps; W-Solaris's has.
         evidence: Evidence::AnyWord(&["bump"]),
         look: Look::WSO,
         says: "W-Solaris's path tracer (yuzc19's reads no bump maps)",
     },
     Fingerprint {
-        dialect: Dialect::TypeVector,
+        // Its scene05 has only the framework's words and `color`: the
+        // canonical dialect, rendered by W-Solaris's path tracer all the same.
+        dialects: &[Dialect::TypeVector, Dialect::Canonical],
+        // "computer-graphics" alone is anybody's folder.
+        evidence: Evidence::Folder {
+            owner: "W-Solaris",
+            repository: "computer-graphics",
+            repository_alone: false,
+        },
+        look: Look::WSO,
+        says: "W-Solaris's path tracer (its files are yuzc19's word for word; --look yzc for yuzc19's)",
+    },
+    Fingerprint {
+        dialects: &[Dialect::TypeVector],
+        evidence: Evidence::Folder {
+            owner: "one-step-beh1nd",
+            repository: "THU2024Spring-CG-Final",
+            repository_alone: true,
+        },
+        look: Look::OSB,
+        says: "one-step-beh1nd's path tracer (this file is yuzc19's word for word; --look yzc for yuzc19's)",
+    },
+    Fingerprint {
+        dialects: &[Dialect::TypeVector],
         // W-Solaris's and yuzc19's files are otherwise word for word the
         // same (vase.txt is scene09_norm.txt at another size).
         evidence: Evidence::Dialect,
@@ -57,13 +116,19 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
                --look wso renders them as W-Solaris's path tracer did",
     },
     Fingerprint {
-        dialect: Dialect::Prop,
+        dialects: &[Dialect::Prop],
         evidence: Evidence::Dialect,
         look: Look::TSC,
         says: "Tschal-rsa's photon mapper (its materials' `prop` words)",
     },
     Fingerprint {
-        dialect: Dialect::Cyy,
+        dialects: &[Dialect::Cav],
+        evidence: Evidence::Dialect,
+        look: Look::CAV,
+        says: "CaveSpiderLZJ's path tracer",
+    },
+    Fingerprint {
+        dialects: &[Dialect::Cyy],
         evidence: Evidence::Dialect,
         look: Look::CYY,
         says: "Chenyu-Yang-2000's path tracer",

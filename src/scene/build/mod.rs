@@ -272,6 +272,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         root,
         medium: scene_medium,
         dialect,
+        source: file.to_path_buf(),
         words: distinct_words(document),
         warnings: context.take_warnings(),
         load,

@@ -48,13 +48,13 @@ impl WarningTally {
             .kinds
             .iter()
             .filter_map(|(kind, tally)| {
+                // Only a kind past the limit has a first omitted warning.
+                let at = tally.first_omitted?;
                 let omitted = tally.seen - MAX_WARNINGS_PER_KIND;
-                tally.first_omitted.map(|at| {
-                    (
-                        at,
-                        format!("{omitted} more warnings like \"{kind}\" from here on (not shown)"),
-                    )
-                })
+                Some((
+                    at,
+                    format!("{omitted} more warnings like \"{kind}\" from here on (not shown)"),
+                ))
             })
             .collect();
         lines.sort_by_key(|(at, _)| (at.line, at.column));
@@ -115,6 +115,21 @@ mod tests {
             kind_of("unknown field 'a' in Material, skipped"),
             kind_of("unknown block 'a' in Material, skipped")
         );
+    }
+
+    /// Found by the fuzz target `scene_text` (every input with a warning):
+    /// the count of omitted warnings was taken for every kind, and for a
+    /// kind within the limit it underflowed, a panic wherever overflow is
+    /// checked (debug builds, the fuzz targets).
+    #[test]
+    fn a_kind_within_the_limit_underflowed_its_omitted_count() {
+        let mut tally = WarningTally::default();
+        let at = |line| Location { line, column: 1 };
+        for line in 1..=MAX_WARNINGS_PER_KIND as u32 {
+            assert!(tally.admit(&format!("unexpected number {line} in Group"), at(line)));
+        }
+        assert!(tally.admit("unknown field 'x' in Material", at(100)));
+        assert!(tally.summaries().is_empty());
     }
 
     #[test]

@@ -1,0 +1,189 @@
+//! The looks, one const row each: the conventions of each renderer, from
+//! its facts in `../shared/docs/looks.md`.
+
+use super::{
+    DispersionSensor, Integrator, Look, Miss, PixelSampling, PointLights, RayOrigins,
+    TextureFrames, TextureRows,
+};
+use crate::bsdf::DielectricFresnel;
+use crate::geometry::SphereTest;
+use crate::scene::model::{FovAxis, LensShape};
+
+/// Scattering vertices that stand for "no limit": Russian roulette ends
+/// paths long before.
+pub(super) const UNLIMITED: u32 = 64;
+
+impl Look {
+    pub const ORIGINAL: Look = Look {
+        name: "original",
+        renderer: "the ported renderer",
+        integrator: Integrator::Path,
+        max_depth: 5,
+        miss: Miss::CameraBackground,
+        point_lights: PointLights::WithoutEmitters,
+        phong_lobes: true,
+        fresnel: DielectricFresnel::Schlick,
+        pixels: PixelSampling::Tent,
+        one_sided_planes: false,
+        texture_times_color: false,
+        texture_rows: TextureRows::Up,
+        fov_axis: None,
+        texture_frames: TextureFrames::Shapes,
+        ray_origins: RayOrigins::Offset,
+        osb_glossy: false,
+        lens_shape: None,
+        dispersion_sensor: DispersionSensor::Spectral,
+        sphere_test: SphereTest::Robust,
+        photons: None,
+    };
+
+    pub const PHYSICAL: Look = Look {
+        name: "physical",
+        renderer: "this project's physically based rendering",
+        miss: Miss::Weighted,
+        fresnel: DielectricFresnel::Exact,
+        ..Look::ORIGINAL
+    };
+
+    pub const PA1: Look = Look {
+        name: "pa1",
+        renderer: "the course framework's ray caster",
+        integrator: Integrator::RayCast,
+        max_depth: 1,
+        miss: Miss::CameraBackground,
+        pixels: PixelSampling::Centre,
+        ..Look::ORIGINAL
+    };
+
+    pub const HAN: Look = Look {
+        name: "han",
+        renderer: "hanna0911/image-renderer (the framework's ray caster through pixel corners)",
+        pixels: PixelSampling::Corner,
+        ..Look::PA1
+    };
+
+    pub const JEF: Look = Look {
+        name: "jef",
+        renderer: "jefflyy/CG_2022spring (Whitted with shadow rays)",
+        integrator: Integrator::Whitted,
+        max_depth: 5,
+        point_lights: PointLights::Always,
+        pixels: PixelSampling::Corner,
+        ..Look::PA1
+    };
+
+    pub const EMJ: Look = Look {
+        name: "emj",
+        renderer: "emily-jia/graphic_homework (Whitted without shadow rays)",
+        integrator: Integrator::WhittedUnshadowed,
+        // Its recursion counts bounces from 0 and stops at 5: six hits.
+        max_depth: 6,
+        point_lights: PointLights::Always,
+        pixels: PixelSampling::Corner,
+        ..Look::PA1
+    };
+
+    pub const CAV: Look = Look {
+        name: "cav",
+        renderer: "CaveSpiderLZJ/PathTracingFinal",
+        // Its paths stop at the 9th hit, which adds its emission.
+        max_depth: 8,
+        miss: Miss::Weighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        texture_rows: TextureRows::Down,
+        ..Look::ORIGINAL
+    };
+
+    pub const CAMBRIAN: Look = Look {
+        name: "cambrian",
+        renderer: "Cambrian-yzt/PathTracer",
+        max_depth: UNLIMITED,
+        miss: Miss::Black,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        texture_times_color: true,
+        texture_frames: TextureFrames::Cambrian,
+        dispersion_sensor: DispersionSensor::Cambrian,
+        sphere_test: SphereTest::Cambrian,
+        ..Look::ORIGINAL
+    };
+
+    pub const WSO: Look = Look {
+        name: "wso",
+        renderer: "W-Solaris/computer-graphics (the D3 family's path tracer)",
+        integrator: Integrator::Original,
+        ray_origins: RayOrigins::AtHit,
+        lens_shape: Some(LensShape::Square),
+        max_depth: 14,
+        miss: Miss::Unweighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        one_sided_planes: true,
+        ..Look::ORIGINAL
+    };
+
+    pub const OSB: Look = Look {
+        name: "osb",
+        renderer: "one-step-beh1nd/THU2024Spring-CG-Final",
+        max_depth: UNLIMITED,
+        miss: Miss::Black,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        fresnel: DielectricFresnel::SmallptUnweighted,
+        osb_glossy: true,
+        ..Look::ORIGINAL
+    };
+
+    pub const YLC: Look = Look {
+        name: "ylc",
+        renderer: "ylc2001/Computational-Graphics-Final-Project",
+        max_depth: UNLIMITED,
+        miss: Miss::Unweighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        ..Look::ORIGINAL
+    };
+
+    pub const CYY: Look = Look {
+        name: "cyy",
+        renderer: "Chenyu-Yang-2000/PathTracing",
+        point_lights: PointLights::Always,
+        ..Look::ORIGINAL
+    };
+
+    pub const YZC: Look = Look {
+        name: "yzc",
+        renderer: "yuzc19/Ray-tracing-engine",
+        fov_axis: Some(FovAxis::Horizontal),
+        lens_shape: Some(LensShape::Square),
+        max_depth: 11,
+        miss: Miss::Weighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        one_sided_planes: true,
+        texture_rows: TextureRows::Down,
+        ..Look::ORIGINAL
+    };
+
+    /// Every look, by name.
+    pub const ALL: [Look; 17] = [
+        Look::ORIGINAL,
+        Look::PHYSICAL,
+        Look::PA1,
+        Look::CAMBRIAN,
+        Look::WSO,
+        Look::OSB,
+        Look::YLC,
+        Look::YZC,
+        Look::CYY,
+        Look::HAN,
+        Look::JEF,
+        Look::EMJ,
+        Look::CAV,
+        Look::TSC,
+        Look::JMS,
+        Look::ALZ_SPPM,
+        Look::YZC_SPPM,
+    ];
+}

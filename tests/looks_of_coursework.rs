@@ -1,0 +1,75 @@
+//! `check` names a look of its own for every scene of every coursework
+//! folder of ../shared/reference/ (the renderer's, found by its
+//! fingerprint), except the renderers listed in [`NOT_YET`] with why.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+
+use pathtracer::look::Look;
+use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
+
+/// Folders whose renderer has no look yet, and why (issue 31).
+const NOT_YET: [(&str, &str); 3] = [
+    (
+        "yao-jz+Computer-Graphics-THU",
+        "its photon-mapping look is not written yet",
+    ),
+    ("yangjunx21+jt_lighting", "its look is not written yet"),
+    ("chen-yingfa+raytracer", "its look is not written yet"),
+];
+
+fn scenes_of(folder: &Path) -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(folder.join("testcases"))
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    files.retain(|p| p.extension().is_some_and(|e| e == "txt"));
+    files.sort();
+    files
+}
+
+#[test]
+fn every_coursework_scene_gets_a_look_of_its_own() {
+    let Some(shared) = common::shared() else {
+        return;
+    };
+    let reference = shared.join("reference");
+    let mut folders = vec![reference.join("cambrian-pathtracer")];
+    let mut coursework: Vec<PathBuf> = std::fs::read_dir(reference.join("coursework"))
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    coursework.retain(|p| p.is_dir());
+    coursework.sort();
+    folders.extend(coursework);
+    let options = LoadOptions {
+        missing_assets: MissingAssets::Placeholder,
+        ..LoadOptions::default()
+    };
+    let mut checked = 0;
+    let mut without = Vec::new();
+    for folder in &folders {
+        let name = folder.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        let skipped = NOT_YET.iter().any(|(f, _)| *f == name);
+        for file in scenes_of(folder) {
+            let options = LoadOptions {
+                base: Some(folder.clone()),
+                ..options.clone()
+            };
+            let Ok(scene) = load_scene(&file, &options) else {
+                continue;
+            };
+            let (look, why) = Look::detect(&scene);
+            println!("{name}/{}: {} ({why})", file.display(), look.name);
+            checked += 1;
+            if !skipped && (why.contains("no look of its own") || look.name == "original") {
+                without.push(format!("{name}: {} ({why})", file.display()));
+            }
+        }
+    }
+    assert!(checked > 100, "only {checked} scenes checked");
+    assert!(
+        without.is_empty(),
+        "without a look of their own:\n{}",
+        without.join("\n")
+    );
+}
