@@ -270,7 +270,11 @@ impl PairJob<'_> {
         let rendered = render(&scene, &settings);
         let seconds = started.elapsed().as_secs_f64();
         let ours = match rendered {
-            Ok((image, _)) => image,
+            Ok((mut image, _)) => {
+                // Ours as `render -o x.png` writes it: the look's curve.
+                settings.look.output.apply(&mut image);
+                image
+            }
             Err(error) => return self.failed(seconds, has_theirs, dialect, error),
         };
         let written = write_image(&self.image_path("ours"), &ours, None).and_then(|()| {

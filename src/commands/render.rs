@@ -10,7 +10,7 @@ use pathtracer::checkpoint::{
     CHECKPOINT_SECONDS, CheckpointStats, Checkpoints, checkpoint_path, render_resumable,
 };
 use pathtracer::image_io::{
-    PendingFile, check_writable, commit_together, encode_image, is_hdr, refuse_inputs,
+    Encoding, PendingFile, check_writable, commit_together, encode_image, is_hdr, refuse_inputs,
 };
 use pathtracer::integrator::{Integrator, split};
 use pathtracer::interrupt;
@@ -220,7 +220,12 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         Some(_) => stats.samples,
         None => film.samples(),
     };
-    let image = photon_image.unwrap_or_else(|| film.to_image());
+    let mut image = photon_image.unwrap_or_else(|| film.to_image());
+    if !is_hdr(&output) && args.encoding.encoding() == Encoding::default() {
+        // The look's renderer's own curve before its writer (a square
+        // root, a rounded gamma ...); `--gamma` and the rest replace it.
+        settings.look.output.apply(&mut image);
+    }
     if args.stats {
         print_phases(&scene, &settings, world_seconds, stats.seconds);
     }

@@ -28,11 +28,15 @@ use crate::world::ShapeRules;
 
 pub mod detect;
 mod integrator;
+mod material_rules;
 mod mist;
+mod output;
 mod photons;
 mod rows;
 pub use integrator::Integrator;
+pub use material_rules::LobeChoice;
 pub use mist::{Mist, cambrian_mean_cosine};
+pub use output::OutputCurve;
 pub use photons::{PhotonLook, SeenEmission};
 
 /// How a look renders dispersive glass.
@@ -165,6 +169,14 @@ pub struct Look {
     /// A photon-mapping renderer's conventions (`photons`); `None`: this
     /// project's photon mapping, when `--integrator sppm` asks for it.
     pub photons: Option<PhotonLook>,
+    /// What the renderer does to a pixel's average before its image writer
+    /// (8-bit outputs, unless `--gamma`, `--exposure` or `--tonemap` say).
+    pub output: OutputCurve,
+    /// Whether an emitter's colour also reflects light (no: a hit on an
+    /// emitter returns its emission and ends the path).
+    pub emitters_reflect: bool,
+    /// How a material's lobe is chosen from its written weights.
+    pub lobe_choice: LobeChoice,
 }
 
 impl Look {

@@ -2,8 +2,8 @@
 //! its facts in `../shared/docs/looks.md`.
 
 use super::{
-    DispersionSensor, Integrator, Look, Miss, PixelSampling, PointLights, RayOrigins,
-    TextureFrames, TextureRows,
+    DispersionSensor, Integrator, LobeChoice, Look, Miss, OutputCurve, PixelSampling, PointLights,
+    RayOrigins, TextureFrames, TextureRows,
 };
 use crate::bsdf::DielectricFresnel;
 use crate::geometry::SphereTest;
@@ -35,6 +35,9 @@ impl Look {
         dispersion_sensor: DispersionSensor::Spectral,
         sphere_test: SphereTest::Robust,
         photons: None,
+        output: OutputCurve::Framework,
+        emitters_reflect: true,
+        lobe_choice: LobeChoice::Weights,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -166,8 +169,40 @@ impl Look {
         ..Look::ORIGINAL
     };
 
+    /// yangjunx21/jt_lighting: smallpt's recursion with its misses black,
+    /// emitters that end the path, lobes by exact weights (everything not
+    /// wholly diffuse or wholly mirror is glass of index 1.5), and its
+    /// output `clamp(c)^(1/2.2)` rounded to the nearest byte.
+    pub const YJX: Look = Look {
+        name: "yjx",
+        renderer: "yangjunx21/jt_lighting",
+        max_depth: UNLIMITED,
+        miss: Miss::Black,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        output: OutputCurve::Gamma22Rounded,
+        emitters_reflect: false,
+        lobe_choice: LobeChoice::WholeWeights,
+        ..Look::ORIGINAL
+    };
+
+    /// chen-yingfa/raytracer: "Ray Tracing in One Weekend" path tracing
+    /// with a black background, emitters that end the path, and its output
+    /// `sqrt(c)`.
+    pub const CYF: Look = Look {
+        name: "cyf",
+        renderer: "chen-yingfa/raytracer",
+        max_depth: UNLIMITED,
+        miss: Miss::Black,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        output: OutputCurve::SquareRoot,
+        emitters_reflect: false,
+        ..Look::ORIGINAL
+    };
+
     /// Every look, by name.
-    pub const ALL: [Look; 17] = [
+    pub const ALL: [Look; 19] = [
         Look::ORIGINAL,
         Look::PHYSICAL,
         Look::PA1,
@@ -185,5 +220,7 @@ impl Look {
         Look::JMS,
         Look::ALZ_SPPM,
         Look::YZC_SPPM,
+        Look::YJX,
+        Look::CYF,
     ];
 }

@@ -378,6 +378,10 @@ fn apply_dispersion(scene: &mut Scene, dispersion: Dispersion) -> Option<Notice>
 /// scene's data: textures upside down for [`TextureRows::Down`], rewritten
 /// for [`TextureFrames::Cambrian`].
 fn adapt(scene: &mut Scene, look: &Look) {
+    scene
+        .materials
+        .iter_mut()
+        .for_each(|material| look.adapt_material(material));
     if look.texture_frames == TextureFrames::Cambrian {
         crate::texture_frames::apply_cambrian(scene);
     }

@@ -17,6 +17,18 @@ use crate::scene::model::Dialect;
 /// Every fingerprint, tried in this order.
 pub const FINGERPRINTS: &[Fingerprint] = &[
     Fingerprint {
+        // Its files are the framework's, yuzc19's word for word, and one
+        // in the rtiow words its parser cannot read.
+        dialects: &[Dialect::Pa1, Dialect::TypeVector, Dialect::Rtiow],
+        evidence: Evidence::Folder {
+            owner: "yangjunx21",
+            repository: "jt_lighting",
+            repository_alone: true,
+        },
+        look: Look::YJX,
+        says: "yangjunx21's path tracer (its files are others' word for word; --look pa1 or yzc for theirs)",
+    },
+    Fingerprint {
         dialects: &[Dialect::Pa1, Dialect::TypeVector],
         evidence: Evidence::Folder {
             owner: "hanna0911",
@@ -126,6 +138,12 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         evidence: Evidence::Dialect,
         look: Look::CAV,
         says: "CaveSpiderLZJ's path tracer",
+    },
+    Fingerprint {
+        dialects: &[Dialect::Cyf],
+        evidence: Evidence::Dialect,
+        look: Look::CYF,
+        says: "chen-yingfa's path tracer",
     },
     Fingerprint {
         dialects: &[Dialect::Cyy],
