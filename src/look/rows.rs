@@ -201,8 +201,74 @@ impl Look {
         ..Look::ORIGINAL
     };
 
+    /// AfireBao/2022_Monte_Carlo_RayTracing: smallpt's recursion, misses
+    /// black, no depth cap (roulette from the 6th hit), light from `Energy`
+    /// only.
+    pub const AFB: Look = Look {
+        name: "afb",
+        renderer: "AfireBao/2022_Monte_Carlo_RayTracing",
+        max_depth: UNLIMITED,
+        miss: Miss::Black,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        ..Look::ORIGINAL
+    };
+
+    /// Bowen-Xu04/MiniRendererProj (its CPU path tracer with NEE, as its
+    /// `run.bat` runs it): roulette from the first hit with no cap, a miss
+    /// after a bounce adds the background unweighted, one fixed ray
+    /// through the pixel centre, glass with no Fresnel split, and its
+    /// output `c^0.6`.
+    pub const BOW: Look = Look {
+        name: "bow",
+        renderer: "Bowen-Xu04/MiniRendererProj",
+        max_depth: UNLIMITED,
+        miss: Miss::Unweighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        fresnel: DielectricFresnel::None,
+        pixels: PixelSampling::Centre,
+        output: OutputCurve::Power06,
+        ..Look::ORIGINAL
+    };
+
+    /// ShuoAndy/Graphic_Final_Project: "Ray Tracing in One Weekend" path
+    /// tracing to depth 50 with no roulette, misses weighted, light from
+    /// the materials' `specularColor` only, lights that do not scatter.
+    pub const SHU: Look = Look {
+        name: "shu",
+        renderer: "ShuoAndy/Graphic_Final_Project",
+        // Depth 50 returns the emission alone: 49 scatterings.
+        max_depth: 49,
+        miss: Miss::Weighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        emitters_reflect: false,
+        ..Look::ORIGINAL
+    };
+
+    /// re2ikotr/thucg-render: "Ray Tracing in One Weekend" path tracing,
+    /// the 10th hit adding its emission alone, no roulette, misses
+    /// weighted, light from `specularColor` only, lights that do not
+    /// scatter.
+    pub const RE2: Look = Look {
+        name: "re2",
+        renderer: "re2ikotr/thucg-render",
+        max_depth: 9,
+        ..Look::SHU
+    };
+
+    /// aliezlo/dzy_gxgz_my's `pt` mode (a command-line mode, so never
+    /// detected): W-Solaris's path tracer with 20 hits instead of 15.
+    pub const ALZ_PT: Look = Look {
+        name: "alz-pt",
+        renderer: "aliezlo/dzy_gxgz_my (pt)",
+        max_depth: 19,
+        ..Look::WSO
+    };
+
     /// Every look, by name.
-    pub const ALL: [Look; 19] = [
+    pub const ALL: [Look; 24] = [
         Look::ORIGINAL,
         Look::PHYSICAL,
         Look::PA1,
@@ -222,5 +288,10 @@ impl Look {
         Look::YZC_SPPM,
         Look::YJX,
         Look::CYF,
+        Look::AFB,
+        Look::BOW,
+        Look::SHU,
+        Look::RE2,
+        Look::ALZ_PT,
     ];
 }

@@ -3,9 +3,12 @@
 
 #![allow(dead_code)]
 
+mod look_scenes;
 mod run;
 mod shapes;
 mod view_client;
+#[allow(unused_imports)]
+pub use look_scenes::*;
 #[allow(unused_imports)]
 pub use run::*;
 #[allow(unused_imports)]

@@ -140,6 +140,32 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         says: "CaveSpiderLZJ's path tracer",
     },
     Fingerprint {
+        dialects: &[Dialect::SmallptInt],
+        evidence: Evidence::Dialect,
+        look: Look::AFB,
+        says: "AfireBao's path tracer",
+    },
+    Fingerprint {
+        dialects: &[Dialect::Bow],
+        evidence: Evidence::Dialect,
+        look: Look::BOW,
+        says: "Bowen-Xu04's path tracer",
+    },
+    Fingerprint {
+        // The rtiow dialect is also cuibst's: only ShuoAndy's camera has
+        // these words.
+        dialects: &[Dialect::Rtiow],
+        evidence: Evidence::AnyWord(&["focus_distance", "lens_radius"]),
+        look: Look::SHU,
+        says: "ShuoAndy's path tracer",
+    },
+    Fingerprint {
+        dialects: &[Dialect::Rtiow],
+        evidence: Evidence::AnyWord(&["len_radius", "MovingObj"]),
+        look: Look::RE2,
+        says: "re2ikotr's path tracer",
+    },
+    Fingerprint {
         dialects: &[Dialect::Cyf],
         evidence: Evidence::Dialect,
         look: Look::CYF,
