@@ -29,15 +29,15 @@ use crate::world::ShapeRules;
 pub mod detect;
 mod integrator;
 mod material_rules;
-mod mist;
 mod output;
 mod photons;
 mod rows;
+mod summary;
 pub use integrator::Integrator;
 pub use material_rules::LobeChoice;
-pub use mist::{Mist, cambrian_mean_cosine};
 pub use output::OutputCurve;
 pub use photons::{PhotonLook, SeenEmission};
+pub use summary::summary;
 
 /// How a look renders dispersive glass.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
