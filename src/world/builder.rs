@@ -71,6 +71,7 @@ impl Builder {
             Object::Plane { normal, offset, .. } => {
                 Plane::new(*normal, *offset).map(|mut plane| {
                     plane.one_sided = self.rules.one_sided_planes;
+                    plane.accepts_zero = self.rules.planes_accept_zero;
                     Shape::Plane(plane)
                 })
             }
