@@ -286,6 +286,5 @@ fn wso_planes_keep_a_ray_that_leaves_from_a_point_on_them() {
     // glass does not reflect (Schlick: about 0.96); kept on the glass, a
     // path brings nothing.
     assert!(refracted_through > 0.45, "{refracted_through}");
-    println!("kept on the glass: {kept}, refracted through: {refracted_through}");
     assert!(kept < 0.5 * refracted_through, "{kept} {refracted_through}");
 }
