@@ -38,6 +38,9 @@ pub struct PixelSum {
     pub converged: bool,
 }
 
+// The memory budget counts a pixel's sums by `limits::PIXEL_SUM_BYTES`.
+const _: () = assert!(std::mem::size_of::<PixelSum>() as u64 == crate::limits::PIXEL_SUM_BYTES);
+
 impl PixelSum {
     /// Adds one sample; `clamp` scales a sample down to that luminance
     /// (biased, off by default). A sample that is not finite or that a f32

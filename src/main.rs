@@ -78,7 +78,7 @@ fn main() -> ExitCode {
     let failed = match result {
         Ok(()) => false,
         Err(message) => {
-            let message = pathtracer::scene::error::printable(&message, true);
+            let message = pathtracer::limits::printable(&message, true);
             pathtracer::stderr_line!("error: {message}");
             true
         }

@@ -2,9 +2,10 @@
 //! (bump) maps, both read at a hit's uv with its mapping.
 
 use crate::color::Color;
+use crate::geometry::UvMapping;
 use crate::math::Vec3;
 use crate::texture::Texture;
-use crate::world::{UvMapping, WorldHit};
+use crate::world::WorldHit;
 
 /// The texel of `texture` at the hit's uv: clamped for [`UvMapping::Unit`],
 /// wrapped for [`UvMapping::Tiled`] (as the colour texture).

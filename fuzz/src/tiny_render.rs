@@ -11,7 +11,8 @@ use pathtracer::render::{RenderSettings, render};
 use pathtracer::render_scene::RenderScene;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::Scene;
-use pathtracer::scene::{LoadOptions, build, parse, summary};
+use pathtracer::look::summary;
+use pathtracer::scene::{LoadOptions, build, parse};
 
 /// Pixels on each side of the tiny image.
 pub const SIDE: u32 = 4;

@@ -4,7 +4,8 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use pathtracer::scene::{load_scene, summary};
+use pathtracer::look::summary;
+use pathtracer::scene::load_scene;
 
 use super::SceneOptions;
 

@@ -86,7 +86,7 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
         ))?),
     };
     let scene = load_for_render(&args.scene, &args.sampling.scene)?;
-    let mut inputs = super::render::scene_inputs(&args.scene, &scene);
+    let mut inputs = scene.load.inputs(&args.scene);
     if let Some(reference) = &args.reference {
         inputs.push(("the reference", reference.as_path()));
     }

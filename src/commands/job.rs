@@ -11,7 +11,6 @@ use pathtracer::image_io::{PendingFile, check_writable, refuse_inputs};
 use pathtracer::render::render_into;
 use pathtracer::render_job::{Crop, JobHeader, parse_samples};
 
-use super::render::scene_inputs;
 use super::{SamplingOptions, load_for_render, render_scene};
 
 /// The options that make `render` a render job.
@@ -63,7 +62,7 @@ pub fn run(
     // refused.
     let mut part_file = PendingFile::reserve(part)?;
     let scene = load_for_render(scene_path, &sampling.scene)?;
-    refuse_inputs(&[&part_file], &scene_inputs(scene_path, &scene))?;
+    refuse_inputs(&[&part_file], &scene.load.inputs(scene_path))?;
     let settings = sampling.settings(&scene, samples.end, !quiet);
     if settings.integrator == pathtracer::integrator::Integrator::Sppm {
         return Err(

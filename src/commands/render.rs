@@ -1,6 +1,6 @@
 //! `pathtracer render`: a scene file to an image, with a one-line summary.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use clap::Args;
@@ -18,7 +18,6 @@ use pathtracer::photon_render;
 use pathtracer::render::{Progress, RenderSettings, Renderer};
 use pathtracer::render_job::{Crop, JobHeader};
 use pathtracer::render_scene::RenderScene;
-use pathtracer::scene::model::Scene;
 
 use super::sidecar::{Made, sidecar_json, sidecar_path};
 use super::{
@@ -150,7 +149,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let outputs: Vec<&PendingFile> = std::iter::once(&image_file)
         .chain(sidecar_file.as_ref())
         .collect();
-    refuse_inputs(&outputs, &scene_inputs(&args.scene, &scene))?;
+    refuse_inputs(&outputs, &scene.load.inputs(&args.scene))?;
     let settings = args.sampling.settings(&scene, args.spp, !args.quiet);
     check_writable(&output, settings.width as usize, settings.height as usize)?;
     if let Some(notice) = args.sampling.spp_notice(&settings, args.spp) {
@@ -312,19 +311,6 @@ fn check_photon_options(args: &RenderArgs, settings: &RenderSettings) -> Result<
         );
     }
     Ok(())
-}
-
-/// The files a render reads, which no output may replace.
-pub fn scene_inputs<'a>(scene_file: &'a Path, scene: &'a Scene) -> Vec<(&'a str, &'a Path)> {
-    std::iter::once(("the scene file", scene_file))
-        .chain(
-            scene
-                .load
-                .assets
-                .iter()
-                .map(|asset| ("a file the scene reads", asset.as_path())),
-        )
-        .collect()
 }
 
 /// `--stats`: the time of each phase, and the machinery a scene did not need.

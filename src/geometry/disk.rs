@@ -2,9 +2,9 @@
 
 use std::f64::consts::PI;
 
+use super::UvMapping;
 use super::{Intersection, SurfaceHit, derivatives_or_fallback};
 use crate::math::{Aabb, Point3, Ray, Vec3, orthonormal_basis};
-use crate::world::UvMapping;
 
 #[derive(Clone, Copy, Debug)]
 pub struct Disk {

@@ -20,7 +20,6 @@ pub mod transform;
 pub mod triangle;
 
 use crate::math::{Point3, Vec3};
-use crate::world::UvMapping;
 
 pub use curve::Curve;
 pub use disk::Disk;
@@ -59,6 +58,15 @@ impl Intersection {
             slot: 0,
         }
     }
+}
+
+/// How a hit's `uv` is meant to be read by a texture lookup.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UvMapping {
+    /// `uv` in [0, 1]: clamped lookup.
+    Unit,
+    /// `uv` in texels of a tiled texture (planes: 10 texels per world unit).
+    Tiled,
 }
 
 /// The local geometry at a hit, in the space of the shape that produced it.

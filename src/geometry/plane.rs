@@ -1,8 +1,8 @@
 //! Infinite planes `normal . p = offset` with a tiled uv frame derived from the normal.
 
+use super::UvMapping;
 use super::{Intersection, SurfaceHit};
 use crate::math::{Point3, Ray, Vec3, orthonormal_basis};
-use crate::world::UvMapping;
 
 /// Texels per world unit of the tiled plane mapping (the original's default).
 pub const PLANE_TILING: f64 = 10.0;

@@ -1,8 +1,8 @@
 //! Parallelograms `origin + s * edge_u + t * edge_v`, s and t in [0, 1].
 
+use super::UvMapping;
 use super::{Intersection, SurfaceHit};
 use crate::math::{Aabb, Point3, Ray, Vec3};
-use crate::world::UvMapping;
 
 #[derive(Clone, Copy, Debug)]
 pub struct Rectangle {

@@ -2,12 +2,12 @@
 
 use std::f64::consts::PI;
 
+use super::UvMapping;
 use super::cambrian_sphere;
 use super::{
     Intersection, SurfaceHit, derivatives_or_fallback, fallback_derivatives, normalize_or,
 };
 use crate::math::{Aabb, Point3, Ray, Vec3};
-use crate::world::UvMapping;
 
 /// The rules of a sphere's ray test.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -1,8 +1,8 @@
 //! Single triangles: Möller–Trumbore in f64; zero-area triangles are never hit.
 
+use super::UvMapping;
 use super::{Intersection, SurfaceHit, derivatives_or_fallback, normalize_or};
 use crate::math::{Aabb, Point3, Ray, Vec3};
-use crate::world::UvMapping;
 
 /// Möller–Trumbore: `(t, b1, b2)` with the hit at `(1-b1-b2) p0 + b1 p1 + b2 p2`.
 /// Degenerate triangles (parallel ray or zero area) give `None`.

@@ -28,12 +28,12 @@ use crate::world::ShapeRules;
 
 pub mod detect;
 mod integrator;
-mod mist;
 mod photons;
 mod rows;
+mod summary;
 pub use integrator::Integrator;
-pub use mist::{Mist, cambrian_mean_cosine};
 pub use photons::{PhotonLook, SeenEmission};
+pub use summary::summary;
 
 /// How a look renders dispersive glass.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

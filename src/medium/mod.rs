@@ -8,10 +8,12 @@
 //! the mean over channels of `sigma_t e^(-sigma_t t)` (a scattering point)
 //! or of `e^(-sigma_t t_max)` (no collision before `t_max`).
 
+mod mist;
 mod phase;
 #[cfg(test)]
 mod tests;
 
+pub use mist::{Mist, cambrian_mean_cosine};
 pub use phase::HenyeyGreenstein;
 
 use crate::color::Color;

@@ -1,6 +1,7 @@
 //! The syntax tree of a scene file: words, numbers, blocks and bracket lists, with spans.
 
-use crate::scene::error::{Location, shown};
+use crate::limits::shown;
+use crate::scene::error::Location;
 
 /// One item of a document or of a block body.
 #[derive(Clone, Debug, PartialEq)]

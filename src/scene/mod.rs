@@ -5,7 +5,6 @@ pub mod build;
 pub mod error;
 pub mod model;
 pub mod parse;
-pub mod summary;
 
 use std::path::{Path, PathBuf};
 
@@ -15,7 +14,6 @@ use crate::scene::model::{Dialect, Scene};
 
 pub use build::build;
 pub use parse::parse;
-pub use summary::summary;
 
 /// How to read a scene file.
 #[derive(Clone, Debug, Default)]

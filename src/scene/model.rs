@@ -113,6 +113,23 @@ pub struct LoadStats {
     pub assets: Vec<std::path::PathBuf>,
 }
 
+impl LoadStats {
+    /// The files a render of this scene reads (`scene_file` and the assets),
+    /// each with the words a message names it by: no output may replace one.
+    pub fn inputs<'a>(
+        &'a self,
+        scene_file: &'a std::path::Path,
+    ) -> Vec<(&'a str, &'a std::path::Path)> {
+        std::iter::once(("the scene file", scene_file))
+            .chain(
+                self.assets
+                    .iter()
+                    .map(|asset| ("a file the scene reads", asset.as_path())),
+            )
+            .collect()
+    }
+}
+
 /// Which family of the PA grammar a file was written in (see docs/scene-format.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Dialect {

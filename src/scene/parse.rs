@@ -11,8 +11,9 @@ use nom::multi::many0_count;
 use nom::sequence::pair;
 
 use crate::limits::MAX_NESTING;
+use crate::limits::shown;
 use crate::scene::ast::{Block, Document, Item, ItemKind};
-use crate::scene::error::{Diagnostic, Location, SceneError, shown};
+use crate::scene::error::{Diagnostic, Location, SceneError};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Token<'a> {

@@ -8,22 +8,13 @@ mod plain;
 mod primitive;
 
 use crate::accel::Bvh;
-use crate::geometry::{Intersection, Shape, SphereTest};
+use crate::geometry::{Intersection, Shape, SphereTest, UvMapping};
 use crate::math::{Aabb, Point3, Ray, Vec3, offset_origin};
 use crate::scene::model::Scene;
 
 use builder::Builder;
 use plain::PlainShapes;
 pub use primitive::Primitive;
-
-/// How a hit's `uv` is meant to be read by a texture lookup.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum UvMapping {
-    /// `uv` in [0, 1]: clamped lookup.
-    Unit,
-    /// `uv` in texels of a tiled texture (planes: 10 texels per world unit).
-    Tiled,
-}
 
 /// A ray's nearest hit, in world space.
 #[derive(Clone, Copy, Debug)]

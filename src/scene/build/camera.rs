@@ -1,7 +1,7 @@
 //! The camera block, read as a key -> value map with every dialect's synonyms.
 
-use crate::look::Mist;
 use crate::math::{Point3, Vec3};
+use crate::medium::Mist;
 use crate::scene::ast::Block;
 use crate::scene::build::{Context, Cursor};
 use crate::scene::error::{Location, SceneError};

@@ -319,10 +319,7 @@ fn read_type(
             _ => {
                 return context.warn(
                     location,
-                    format!(
-                        "unknown material type '{}'",
-                        crate::scene::error::shown(word)
-                    ),
+                    format!("unknown material type '{}'", crate::limits::shown(word)),
                 );
             }
         };

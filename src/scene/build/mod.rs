@@ -27,9 +27,10 @@ mod weights;
 use std::path::Path;
 
 use crate::color::Color;
+use crate::limits::shown;
 use crate::scene::LoadOptions;
 use crate::scene::ast::{Block, Document, ItemKind};
-use crate::scene::error::{Diagnostic, Location, SceneError, shown};
+use crate::scene::error::{Diagnostic, Location, SceneError};
 use crate::scene::model::{Material, Object, Scene};
 
 pub use cursor::Cursor;

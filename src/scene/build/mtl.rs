@@ -17,11 +17,12 @@
 use std::path::{Path, PathBuf};
 
 use crate::color::Color;
+use crate::limits::shown_path;
 use crate::scene::build::Context;
 use crate::scene::build::material::PathRef;
 use crate::scene::build::obj::{MaterialLibrary, ObjMaterials};
 use crate::scene::build::textures::{MapName, MaterialImages, SurfaceMapRef};
-use crate::scene::error::{Location, SceneError, shown_path};
+use crate::scene::error::{Location, SceneError};
 use crate::scene::model::{Material, Phong};
 
 /// Converts the materials of an OBJ (`obj`, read at `at` in the scene).

@@ -3,6 +3,7 @@
 use nalgebra::Rotation3;
 
 use crate::limits::MAX_NESTING;
+use crate::limits::shown;
 use crate::math::{Matrix, Vec3};
 use crate::scene::MissingAssets;
 use crate::scene::ast::{Block, ItemKind};
@@ -13,7 +14,7 @@ use crate::scene::build::shapes::{Fields, build_shape};
 use crate::scene::build::textures::MaterialImages;
 use crate::scene::build::transform::wrap;
 use crate::scene::build::{Context, Cursor, paths, transform};
-use crate::scene::error::{Location, SceneError, shown};
+use crate::scene::error::{Location, SceneError};
 use crate::scene::model::Object;
 
 /// Walks `Group` blocks; the current material is global state, as in the original.

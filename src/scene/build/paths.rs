@@ -2,8 +2,8 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::limits::shown_path;
 use crate::scene::LoadOptions;
-use crate::scene::error::shown_path;
 
 /// Candidate locations of `relative`, in the order they are tried: `--base` if given,
 /// else the scene file's grand-parent; then the scene's own directory; then the

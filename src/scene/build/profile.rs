@@ -2,9 +2,10 @@
 //! the warnings for profiles that sweep no area or have a span that is a point.
 
 use crate::limits::MAX_CONTROL_POINTS;
+use crate::limits::shown;
 use crate::scene::ast::{Block, ItemKind};
 use crate::scene::build::Context;
-use crate::scene::error::{Location, SceneError, shown};
+use crate::scene::error::{Location, SceneError};
 use crate::scene::model::{CurveKind, Profile};
 
 /// `BezierCurve { controls [x y z]* }` or `BsplineCurve { ... }`. `None`

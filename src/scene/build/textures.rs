@@ -21,12 +21,13 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use crate::checker::Checker;
+use crate::limits::shown_path;
 use crate::scene::MissingAssets;
 use crate::scene::build::descriptor::{self, Descriptor};
 use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::build::texture_file::read_texture;
 use crate::scene::build::{Context, paths};
-use crate::scene::error::{SceneError, shown_path};
+use crate::scene::error::SceneError;
 use crate::scene::model::{Bump, Material, Object};
 use crate::texture::Texture;
 

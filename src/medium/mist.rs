@@ -1,8 +1,8 @@
 //! Cambrian's camera mist as a physical medium filling the scene.
 
+use super::{HenyeyGreenstein, Medium};
 use crate::color::Color;
 use crate::math::Vec3;
-use crate::medium::{HenyeyGreenstein, Medium};
 
 /// Cambrian's camera `mist e s b` (`../shared/docs/looks.md`): over a
 /// segment of length `t` a path dies with probability `1 - e^t`, else it

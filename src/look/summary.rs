@@ -1,6 +1,6 @@
 //! A one-paragraph description of a built scene, for `pathtracer check`.
 
-use crate::look::Look;
+use super::Look;
 use crate::scene::model::{FovAxis, Object, Scene};
 
 /// Dialect, camera, resolution and counts of a scene, in one paragraph.

@@ -8,6 +8,9 @@
 use std::io::Read;
 use std::path::Path;
 
+mod shown;
+pub use shown::{printable, shown, shown_path};
+
 /// Default budget for the memory an image's film and output buffers may take,
 /// in bytes (4 GiB); `--max-memory` raises or lowers it.
 pub const DEFAULT_MEMORY_BUDGET: u64 = 4 << 30;
@@ -34,7 +37,7 @@ pub fn read_text_within(path: &Path, max_bytes: u64, limit_name: &str) -> Result
     String::from_utf8(bytes).map_err(|e| {
         format!(
             "'{}': not UTF-8 text (byte {})",
-            crate::scene::error::shown_path(path),
+            shown_path(path),
             e.utf8_error().valid_up_to()
         )
     })
@@ -95,14 +98,17 @@ pub fn is_usable_radiance(channels: [f64; 3]) -> bool {
 
 /// Bytes per pixel of an image's render at its peak, which is when a film
 /// file is written (a checkpoint or a render job's part): the film's sums,
-/// squares and counts ([`PixelSum`](crate::film::PixelSum)) and light
+/// squares and counts ([`PIXEL_SUM_BYTES`]) and light
 /// tracing's sums (3 x 8 bytes), plus [`FILM_FILE_BYTES_PER_PIXEL`]. The
 /// other phases take less: a pass adds an atomic copy of the light sums
 /// (24 bytes), writing an image the linear image and its largest encoding
 /// (24 + 36 bytes). Measured: a film job of 2048x1536 peaks at 290 bytes
 /// per pixel above the process's own 8 MB.
-pub const BYTES_PER_PIXEL: u64 =
-    std::mem::size_of::<crate::film::PixelSum>() as u64 + 24 + FILM_FILE_BYTES_PER_PIXEL;
+pub const BYTES_PER_PIXEL: u64 = PIXEL_SUM_BYTES + 24 + FILM_FILE_BYTES_PER_PIXEL;
+
+/// Size of one pixel's [`PixelSum`](crate::film::PixelSum), in bytes; the
+/// film checks it at compile time, so the figure cannot drift from the type.
+pub const PIXEL_SUM_BYTES: u64 = 96;
 
 /// Bytes per pixel of encoding a film file (`film_file`): 26 channels of
 /// 32-bit words (sums, squares, counts, splats), the preview image and its
@@ -223,7 +229,7 @@ impl MemoryBudget {
 /// before anything is read: a directory, a device such as `/dev/zero`, a
 /// pipe or an oversized file is refused at once, never read forever.
 pub fn read_within(path: &Path, max_bytes: u64, limit_name: &str) -> Result<Vec<u8>, String> {
-    let shown = crate::scene::error::shown_path(path);
+    let shown = shown_path(path);
     let metadata = std::fs::metadata(path).map_err(|e| format!("'{shown}': {e}"))?;
     if metadata.is_dir() {
         return Err(format!("'{shown}' is a directory, not a file"));
