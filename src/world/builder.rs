@@ -4,10 +4,11 @@ use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use super::{Primitive, ShapeRules};
+use crate::geometry::MeshData;
 use crate::geometry::{
     Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, Transform, Triangle,
 };
-use crate::scene::model::{MeshData, Object};
+use crate::scene::model::Object;
 
 #[derive(Default)]
 pub(super) struct Builder {
