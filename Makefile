@@ -6,7 +6,7 @@ SCENE ?= testcases/smallpt.txt
 SPP ?= 64
 BIN := target/release/pathtracer
 
-.PHONY: build render test lint bench bench-peers converge lookalike crosscheck crosscheck-glossy crosscheck-media crosscheck-dispersion mitsuba-converge gallery fuzz fuzz-seeds farm-test clean
+.PHONY: build render test test-browser lint bench bench-peers converge lookalike crosscheck crosscheck-glossy crosscheck-media crosscheck-dispersion mitsuba-converge gallery fuzz fuzz-seeds farm-test clean
 
 build:
 	$(CARGO) build --release
@@ -20,6 +20,18 @@ render: build
 
 test:
 	$(CARGO) test --release
+
+# The page of `pathtracer view` in headless Chromium, driven over its
+# DevTools pipe by scripts/browser/ (Python, standard library only; not part
+# of `make test`): the picture shows, the exposure slider changes it with no
+# new render, a saved scene brings the new picture, a broken one its error;
+# against a coursework render (../shared) it writes
+# docs/images/view_against.png. Installs Debian's chromium if missing.
+CHROMIUM ?= /usr/bin/chromium
+test-browser: build
+	@test -x $(CHROMIUM) || \
+		(apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium)
+	python3 scripts/browser/view_in_chromium.py --chromium $(CHROMIUM)
 
 lint:
 	$(CARGO) fmt --check

@@ -11,13 +11,14 @@ mod common;
 
 use common::{incoherent_rays, load_obj};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use pathtracer::geometry::{CurveKind, Profile};
 use pathtracer::integrator::Integrator;
 use pathtracer::look::Look;
 use pathtracer::math::{Ray, Vec3};
 use pathtracer::render::{RenderSettings, render};
 use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::sampler::SamplerKind;
-use pathtracer::scene::model::{CurveKind, Material, Object, Profile, Scene};
+use pathtracer::scene::model::{Material, Object, Scene};
 use pathtracer::scene::{LoadOptions, load_scene};
 use pathtracer::world::World;
 

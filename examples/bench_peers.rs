@@ -20,10 +20,11 @@ use obvhs::BvhBuildParams;
 use obvhs::cwbvh::builder::build_cwbvh_from_tris;
 use obvhs::ray::RayHit;
 use obvhs::triangle::Triangle;
+use pathtracer::geometry::MeshData;
 use pathtracer::look::Look;
 use pathtracer::math::Ray;
 use pathtracer::render_scene::{RenderScene, SceneSettings};
-use pathtracer::scene::model::{Material, MeshData, Object, Scene};
+use pathtracer::scene::model::{Material, Object, Scene};
 
 /// One renderer's answer to the two queries over a ray set.
 trait Tracer {

@@ -18,7 +18,7 @@
 # sphere test) would be another image.
 #
 # Our reference is the path integrator at REF_SPP (the same expected image as
-# the original estimator: tests/integrator_agreement.rs); Mitsuba's error is
+# the original estimator: tests/integrator_agreement/); Mitsuba's error is
 # measured against Mitsuba's own reference, since its translation of a scene
 # differs slightly in expectation (see scripts/crosscheck.py).
 set -euo pipefail

@@ -10,9 +10,10 @@ use std::sync::Arc;
 
 use common::*;
 use pathtracer::color::Color;
+use pathtracer::geometry::MeshData;
 use pathtracer::math::{Point3, Ray, Vec3, orthonormal_basis};
 use pathtracer::scene::LoadOptions;
-use pathtracer::scene::model::{Bump, Material, MeshData, Object, Scene};
+use pathtracer::scene::model::{Bump, Material, Object, Scene};
 use pathtracer::texture::Texture;
 
 /// A `width` x 4 height map whose grey value rises by `step` per column.

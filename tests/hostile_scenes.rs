@@ -5,11 +5,12 @@
 use std::path::Path;
 
 use pathtracer::geometry::Revolution;
+use pathtracer::geometry::{CurveKind, Profile};
 use pathtracer::limits::{MAX_CONTROL_POINTS, MAX_NESTING, MAX_SHOWN_TOKEN};
 use pathtracer::math::{Point3, Ray, Vec3};
 use pathtracer::scene::ast::{Block, Document, Item, ItemKind};
 use pathtracer::scene::error::{Location, SceneError};
-use pathtracer::scene::model::{CurveKind, Profile, Scene};
+use pathtracer::scene::model::Scene;
 use pathtracer::scene::{LoadOptions, build, parse};
 
 const HEAD: &str = "PerspectiveCamera { center 0 1 8 direction 0 0 -1 up 0 1 0 angle 30 \

@@ -253,3 +253,38 @@ fn cambrian_sphere_test_keeps_the_image_of_paths_traced_from_the_camera_alone() 
         "{with_light_paths} {camera_alone}"
     );
 }
+
+#[test]
+fn wso_planes_keep_a_ray_that_leaves_from_a_point_on_them() {
+    // W-Solaris's planes accept t >= 0 and its rays leave from the hit
+    // itself: a camera ray refracted by a glass plane at y = -4 from a hit
+    // point that rounds onto the plane meets it again at distance 0, hit
+    // after hit, and never reaches the emitting floor under it.
+    let mut scene = glass_over_floor();
+    let Object::Group(objects) = &mut scene.root else {
+        unreachable!("glass_over_floor is a group");
+    };
+    objects.truncate(2);
+    objects[0] = Object::Plane {
+        normal: Vec3::y(),
+        offset: -4.5,
+        material: 2,
+    };
+    objects[1] = Object::Plane {
+        normal: Vec3::y(),
+        offset: -4.0,
+        material: 1,
+    };
+    scene.materials[2].emission = Color::gray(0.5);
+    let red = |look: Look| mean(&scene, &settings(look, look.integrator, 64)).r;
+    let kept = red(Look::WSO);
+    let refracted_through = red(Look {
+        planes_accept_zero: false,
+        ..Look::WSO
+    });
+    // Through the glass the floor is 0.5 (its emission) times what the
+    // glass does not reflect (Schlick: about 0.96); kept on the glass, a
+    // path brings nothing.
+    assert!(refracted_through > 0.45, "{refracted_through}");
+    assert!(kept < 0.5 * refracted_through, "{kept} {refracted_through}");
+}

@@ -108,8 +108,8 @@ fn newton_revolution_agrees_with_fine_tessellation() {
 /// the sweeps of both halves, and seeds must still be found near the crossing.
 #[test]
 fn profile_crossing_the_axis_agrees_with_tessellation() {
-    let profile = pathtracer::scene::model::Profile {
-        kind: pathtracer::scene::model::CurveKind::Bezier,
+    let profile = pathtracer::geometry::Profile {
+        kind: pathtracer::geometry::CurveKind::Bezier,
         controls: vec![[-1.0, 0.0], [0.5, 1.0], [1.5, 2.0], [-0.5, 3.0]],
     };
     let surface = Revolution::new(&profile).unwrap();

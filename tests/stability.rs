@@ -8,6 +8,7 @@ mod common;
 use std::sync::Arc;
 
 use pathtracer::color::Color;
+use pathtracer::geometry::{CurveKind, MeshData, Profile};
 use pathtracer::image_io::Image;
 use pathtracer::integrator::Integrator;
 use pathtracer::math::{Matrix, Ray, Vec3};
@@ -15,7 +16,7 @@ use pathtracer::metrics::compare;
 use pathtracer::render::RenderSettings;
 use pathtracer::rng::Rng;
 use pathtracer::sampler::SamplerKind;
-use pathtracer::scene::model::{CurveKind, Material, MeshData, Object, Profile, Scene};
+use pathtracer::scene::model::{Material, Object, Scene};
 
 fn materials() -> Vec<Material> {
     vec![

@@ -9,10 +9,11 @@ mod common;
 use std::sync::Arc;
 
 use common::*;
+use pathtracer::geometry::MeshData;
 use pathtracer::geometry::UvMapping;
 use pathtracer::math::{Aabb, Matrix, Point3, Ray, Vec3};
 use pathtracer::rng::Rng;
-use pathtracer::scene::model::{MeshData, Object};
+use pathtracer::scene::model::Object;
 use pathtracer::world::{World, WorldHit};
 
 /// A curved 8x8 grid patch `z = 0.3 (x^2 + y^2)`, with an oblique affine uv

@@ -3,9 +3,9 @@
 
 use std::path::Path;
 
+use pathtracer::geometry::MeshData;
 use pathtracer::math::{Ray, Vec3};
 use pathtracer::rng::Rng;
-use pathtracer::scene::model::MeshData;
 use pathtracer::world::World;
 
 pub fn load_obj(path: &Path) -> MeshData {

@@ -14,6 +14,7 @@ pub mod compare;
 pub mod completions;
 pub mod converge;
 pub mod debug_sample;
+mod encoding;
 pub mod examples;
 pub mod job;
 pub mod lookalike;
@@ -28,7 +29,6 @@ use clap::Args;
 
 use pathtracer::allocation::check_available;
 use pathtracer::film::Film;
-use pathtracer::image_io::{Encoding, Tonemap, is_hdr};
 use pathtracer::integrator::Integrator;
 use pathtracer::integrator::sppm::PhotonSettings;
 use pathtracer::limits::{MAX_IMAGE_SIDE, MAX_PATH_DEPTH, MemoryBudget};
@@ -39,6 +39,8 @@ use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::model::{Dialect, Scene};
 use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
 use pathtracer::spectral::Dispersion;
+
+pub use encoding::{EncodingOptions, linear_output_hint};
 
 #[derive(Args, Clone)]
 pub struct SceneOptions {
@@ -87,41 +89,6 @@ impl SceneOptions {
 
 fn parse_memory_budget(text: &str) -> Result<MemoryBudget, String> {
     MemoryBudget::parse(text)
-}
-
-/// How 8-bit outputs (BMP, PNG) encode radiance, shared by `render` and
-/// `convert`; PFM and EXR outputs stay linear.
-#[derive(Args, Clone)]
-pub struct EncodingOptions {
-    /// Gamma for 8-bit output (2.2 for smallpt-style images; default: none,
-    /// as the PA framework writer).
-    #[arg(long)]
-    pub gamma: Option<f64>,
-    /// Exposure for 8-bit output in stops: values are multiplied by
-    /// 2^EXPOSURE before the tone curve (default 0).
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-    pub exposure: f64,
-    /// Tone curve for 8-bit output, per channel: `none` (the default:
-    /// clipped at 1), `reinhard` (c / (1 + c)) or `aces` (Narkowicz's fit).
-    #[arg(long, default_value = "none", value_parser = parse_tonemap)]
-    pub tonemap: Tonemap,
-}
-
-impl EncodingOptions {
-    pub fn encoding(&self) -> Encoding {
-        Encoding {
-            exposure: self.exposure,
-            tonemap: self.tonemap,
-            gamma: self.gamma,
-        }
-    }
-}
-
-fn parse_tonemap(name: &str) -> Result<Tonemap, String> {
-    Tonemap::from_name(name).ok_or_else(|| {
-        let names: Vec<&str> = Tonemap::ALL.iter().map(|t| t.name()).collect();
-        format!("unknown tone curve '{name}' (one of: {})", names.join(", "))
-    })
 }
 
 /// How to sample the image, shared by `render` and `converge`.
@@ -287,19 +254,6 @@ impl SamplingOptions {
             )
         })
     }
-}
-
-/// The line after an image written as linear 8-bit (no gamma, no tone
-/// curve): how to get one to look at.
-pub fn linear_output_hint(output: &Path, encoding: &Encoding) -> Option<String> {
-    let linear = encoding.gamma.is_none() && encoding.tonemap == Tonemap::None;
-    (linear && !is_hdr(output)).then(|| {
-        format!(
-            "{}: linear 8-bit, as the course framework wrote it (dark on a screen); \
-             --gamma 2.2 writes a display-encoded image",
-            output.display()
-        )
-    })
 }
 
 /// A finite number above 0 (`nan`, `inf`, 0 and negative numbers are refused).

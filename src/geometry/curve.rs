@@ -3,7 +3,21 @@
 
 use nalgebra::Vector2;
 
-use crate::scene::model::{CurveKind, Profile};
+/// Profile curve of a surface of revolution, in the xy plane, swept about y.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Profile {
+    pub kind: CurveKind,
+    /// Control points (x, y); z of the file is dropped.
+    pub controls: Vec<[f64; 2]>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CurveKind {
+    /// One Bezier curve of degree `controls.len() - 1`.
+    Bezier,
+    /// A uniform cubic B-spline (clamped to the range where it is defined).
+    Bspline,
+}
 
 pub type Point2 = Vector2<f64>;
 

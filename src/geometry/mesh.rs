@@ -14,7 +14,17 @@ use super::triangle::surface_vertices;
 use super::{Intersection, SurfaceHit, normalize_or};
 use crate::accel::LeafTriangles;
 use crate::math::{Aabb, Point3, Ray, Vec3};
-use crate::scene::model::MeshData;
+
+/// Triangle mesh data as loaded from an OBJ file (object space).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MeshData {
+    pub positions: Vec<Point3>,
+    /// Per-vertex normals (same length as `positions`) when the file has them.
+    pub normals: Option<Vec<Vec3>>,
+    /// Per-vertex texture coordinates when the file has them.
+    pub uvs: Option<Vec<[f64; 2]>>,
+    pub triangles: Vec<[u32; 3]>,
+}
 
 #[derive(Debug)]
 pub struct Mesh {

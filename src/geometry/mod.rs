@@ -21,9 +21,9 @@ pub mod triangle;
 
 use crate::math::{Point3, Vec3};
 
-pub use curve::Curve;
+pub use curve::{Curve, CurveKind, Profile};
 pub use disk::Disk;
-pub use mesh::Mesh;
+pub use mesh::{Mesh, MeshData};
 pub use plane::Plane;
 pub use rectangle::Rectangle;
 pub use revolution::Revolution;

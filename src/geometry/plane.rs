@@ -17,6 +17,11 @@ pub struct Plane {
     frame: (Vec3, Vec3),
     /// Hit only by rays that travel against the normal (W-Solaris's planes).
     pub one_sided: bool,
+    /// Hit at the distance `t_min` itself too (W-Solaris's planes accept
+    /// `t >= 0`: a ray that leaves from a point lying exactly on the plane
+    /// finds it again at distance 0, and again, as long as it travels
+    /// against the normal).
+    pub accepts_zero: bool,
 }
 
 impl Plane {
@@ -32,6 +37,7 @@ impl Plane {
             offset: offset / length,
             frame: orthonormal_basis(&normal),
             one_sided: false,
+            accepts_zero: false,
         })
     }
 
@@ -42,7 +48,8 @@ impl Plane {
             return None;
         }
         let t = (self.offset - self.normal.dot(&ray.origin)) / denominator;
-        (t > t_min && t < t_max).then(|| Intersection::new(t, 0.0, 0.0))
+        let beyond_start = t > t_min || (self.accepts_zero && t == t_min);
+        (beyond_start && t < t_max).then(|| Intersection::new(t, 0.0, 0.0))
     }
 
     pub fn surface(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
@@ -74,6 +81,20 @@ mod tests {
         let hit = plane.intersect(&ray, 0.0, f64::INFINITY).unwrap();
         assert!((hit.t - 8.0).abs() < 1e-12);
         assert!(Plane::new(Vec3::zeros(), 1.0).is_none());
+    }
+
+    #[test]
+    fn a_plane_that_accepts_zero_is_met_again_from_a_point_on_it() {
+        let mut plane = Plane::new(Vec3::y(), -4.0).unwrap();
+        plane.one_sided = true;
+        let down = Ray::new(Point3::new(0.3, -4.0, 1.7), Vec3::new(0.2, -1.0, 0.1), 0.0);
+        assert!(plane.intersect(&down, 0.0, f64::INFINITY).is_none());
+        plane.accepts_zero = true;
+        let hit = plane.intersect(&down, 0.0, f64::INFINITY).unwrap();
+        assert_eq!(hit.t, 0.0);
+        // Leaving along the normal, a one-sided plane is not met at all.
+        let up = Ray::new(down.origin, Vec3::y(), 0.0);
+        assert!(plane.intersect(&up, 0.0, f64::INFINITY).is_none());
     }
 
     #[test]

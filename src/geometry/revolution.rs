@@ -11,12 +11,12 @@
 
 use std::f64::consts::PI;
 
+use super::Profile;
 use super::UvMapping;
 use super::curve::Curve;
 use super::profile_seeds::{RadialRay, SeedTessellation};
 use super::{Intersection, SurfaceHit, derivatives_or_fallback, normalize_or};
 use crate::math::{Aabb, Point3, Ray, Vec3, inverse_direction};
-use crate::scene::model::Profile;
 
 /// At most this many seeds per ray are refined (further ones are dropped).
 const MAX_SEEDS: usize = 48;
@@ -236,8 +236,8 @@ fn outward_orientation(curve: &Curve) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::CurveKind;
     use crate::rng::Rng;
-    use crate::scene::model::CurveKind;
 
     fn vase() -> Revolution {
         Revolution::new(&Profile {

@@ -176,8 +176,9 @@ fn transformed(matrix: crate::math::Matrix, child: Object) -> Object {
 
 #[test]
 fn world_hits_find_the_density_their_light_sample_had() {
+    use crate::geometry::MeshData;
     use crate::math::Matrix;
-    use crate::scene::model::{Material, MeshData};
+    use crate::scene::model::Material;
     let emissive = Material {
         emission: Color::new(1.0, 2.0, 3.0),
         ..Material::default()

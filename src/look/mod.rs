@@ -149,6 +149,12 @@ pub struct Look {
     /// Whether planes are hit from the front only (so that light passes
     /// through them from behind).
     pub one_sided_planes: bool,
+    /// Whether planes are hit at distance 0 too (W-Solaris's accept
+    /// `t >= 0`): with rays leaving from the hit itself, a ray refracted
+    /// through a plane from a point that rounds exactly onto it meets the
+    /// plane again at 0, hit after hit, until it is reflected away or its
+    /// hits run out.
+    pub planes_accept_zero: bool,
     /// Whether a texel is multiplied by the material's colour (Cambrian's
     /// `colour x texture`) instead of replacing it (the original's).
     pub texture_times_color: bool,
@@ -196,6 +202,7 @@ impl Look {
     pub fn shape_rules(&self) -> ShapeRules {
         ShapeRules {
             one_sided_planes: self.one_sided_planes,
+            planes_accept_zero: self.planes_accept_zero,
             sphere_test: self.sphere_test,
         }
     }

@@ -25,6 +25,7 @@ impl Look {
         fresnel: DielectricFresnel::Schlick,
         pixels: PixelSampling::Tent,
         one_sided_planes: false,
+        planes_accept_zero: false,
         texture_times_color: false,
         texture_rows: TextureRows::Up,
         fov_axis: None,
@@ -123,6 +124,8 @@ impl Look {
         point_lights: PointLights::Never,
         phong_lobes: false,
         one_sided_planes: true,
+        // `W-Solaris/computer-graphics:include/plane.hpp:29` (looks.md).
+        planes_accept_zero: true,
         ..Look::ORIGINAL
     };
 

@@ -6,6 +6,7 @@
 use std::sync::Arc;
 
 use crate::color::Color;
+use crate::geometry::{MeshData, Profile};
 use crate::math::{Matrix, Point3, Vec3};
 use crate::medium::Medium;
 use crate::scene::error::Diagnostic;
@@ -287,33 +288,6 @@ pub enum Light {
         edge_v: Vec3,
         color: Color,
     },
-}
-
-/// Profile curve of a surface of revolution, in the xy plane, swept about y.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Profile {
-    pub kind: CurveKind,
-    /// Control points (x, y); z of the file is dropped.
-    pub controls: Vec<[f64; 2]>,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CurveKind {
-    /// One Bezier curve of degree `controls.len() - 1`.
-    Bezier,
-    /// A uniform cubic B-spline (clamped to the range where it is defined).
-    Bspline,
-}
-
-/// Triangle mesh data as loaded from an OBJ file (object space).
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct MeshData {
-    pub positions: Vec<Point3>,
-    /// Per-vertex normals (same length as `positions`) when the file has them.
-    pub normals: Option<Vec<Vec3>>,
-    /// Per-vertex texture coordinates when the file has them.
-    pub uvs: Option<Vec<[f64; 2]>>,
-    pub triangles: Vec<[u32; 3]>,
 }
 
 /// In `Object::Mesh::face_materials`: the triangle has the mesh's own material.

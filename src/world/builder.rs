@@ -4,10 +4,11 @@ use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use super::{Primitive, ShapeRules};
+use crate::geometry::MeshData;
 use crate::geometry::{
     Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, Transform, Triangle,
 };
-use crate::scene::model::{MeshData, Object};
+use crate::scene::model::Object;
 
 #[derive(Default)]
 pub(super) struct Builder {
@@ -71,6 +72,7 @@ impl Builder {
             Object::Plane { normal, offset, .. } => {
                 Plane::new(*normal, *offset).map(|mut plane| {
                     plane.one_sided = self.rules.one_sided_planes;
+                    plane.accepts_zero = self.rules.planes_accept_zero;
                     Shape::Plane(plane)
                 })
             }

@@ -128,6 +128,8 @@ pub struct PlaneLanes {
     offset: f64x4,
     /// All ones in the lanes of one-sided planes.
     one_sided: f64x4,
+    /// All ones in the lanes of planes hit at `t_min` itself too.
+    accepts_zero: f64x4,
     /// All ones in the lanes that hold a plane.
     used: f64x4,
     indices: [u32; LANES],
@@ -141,6 +143,7 @@ impl PlaneLanes {
             normal: pack_vector(planes, |p| p.normal),
             offset: pack(planes, |p| p.offset),
             one_sided: pack(planes, |p| if p.one_sided { ALL_ONES } else { 0.0 }),
+            accepts_zero: pack(planes, |p| if p.accepts_zero { ALL_ONES } else { 0.0 }),
             used: used_lanes(planes),
             indices: lane_indices(planes),
         }
@@ -156,7 +159,9 @@ impl Lanes for PlaneLanes {
         let zero = f64x4::ZERO;
         let refused = denominator.simd_eq(zero) | (self.one_sided & denominator.simd_gt(zero));
         let t = (self.offset - dot(&self.normal, &ray.origin)) / denominator;
-        let inside = t.simd_gt(f64x4::splat(t_min)) & t.simd_lt(f64x4::splat(t_max));
+        let start = f64x4::splat(t_min);
+        let beyond_start = t.simd_gt(start) | (self.accepts_zero & t.simd_eq(start));
+        let inside = beyond_start & t.simd_lt(f64x4::splat(t_max));
         (t, refused.bitselect(f64x4::ZERO, inside & self.used))
     }
 

@@ -86,6 +86,8 @@ pub fn spawn_origin(
 pub struct ShapeRules {
     /// Planes are hit from the front only, so light passes them from behind.
     pub one_sided_planes: bool,
+    /// Planes are hit at distance 0 too (see [`crate::geometry::Plane::accepts_zero`]).
+    pub planes_accept_zero: bool,
     pub sphere_test: SphereTest,
 }
 

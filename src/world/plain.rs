@@ -141,6 +141,7 @@ mod tests {
             for _ in 0..scene % 7 {
                 let mut plane = Plane::new(random(2.0), random(6.0).x).unwrap();
                 plane.one_sided = scene % 3 == 0;
+                plane.accepts_zero = scene % 4 < 2;
                 shapes.push_plane(plane, index);
                 index += 1;
             }
@@ -188,5 +189,24 @@ mod tests {
             }
         }
         assert!(hits > rays / 4 && hits < rays * 9 / 10, "{hits} of {rays}");
+    }
+
+    #[test]
+    fn groups_meet_a_plane_that_accepts_zero_from_a_point_on_it() {
+        let ray = Ray::new(Point3::new(0.3, -4.0, 1.7), Vec3::new(0.2, -1.0, 0.1), 0.0);
+        for accepts_zero in [false, true] {
+            let mut shapes = PlainShapes::default();
+            let mut plane = Plane::new(Vec3::y(), -4.0).unwrap();
+            (plane.one_sided, plane.accepts_zero) = (true, accepts_zero);
+            shapes.push_plane(plane, 0);
+            shapes.pack();
+            let (mut limit, mut best) = (f64::INFINITY, None);
+            shapes.nearest(&ray, 0.0, &mut limit, &mut best);
+            assert_eq!(
+                best.map(|(index, hit)| (index, hit.t)),
+                accepts_zero.then_some((0, 0.0))
+            );
+            assert_eq!(shapes.any(&ray, 0.0, f64::INFINITY), accepts_zero);
+        }
     }
 }

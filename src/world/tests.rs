@@ -5,7 +5,8 @@ use super::*;
 use crate::math::Matrix;
 use std::sync::Arc;
 
-use crate::scene::model::{MeshData, Object};
+use crate::geometry::MeshData;
+use crate::scene::model::Object;
 
 fn scene(root: Object) -> Scene {
     Scene::new(Vec::new(), root)
@@ -88,7 +89,7 @@ fn random_primitives(rng: &mut crate::rng::Rng, count: usize) -> Vec<Primitive> 
     let mut primitives = Vec::new();
     // A little mesh (a tetrahedron's four faces) for the instances.
     let tetrahedron = Arc::new(crate::geometry::Mesh::new(Arc::new(
-        crate::scene::model::MeshData {
+        crate::geometry::MeshData {
             positions: vec![
                 Point3::new(0.0, 0.0, 0.0),
                 Point3::new(1.5, 0.0, 0.2),

@@ -3,9 +3,10 @@
 use std::path::Path;
 use std::sync::Arc;
 
+use pathtracer::geometry::{CurveKind, MeshData, Profile};
 use pathtracer::math::{Aabb, Matrix, Point3, Ray, Vec3};
 use pathtracer::rng::Rng;
-use pathtracer::scene::model::{CurveKind, MeshData, Object, Profile};
+use pathtracer::scene::model::Object;
 
 pub const BUNNY: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),

@@ -16,11 +16,12 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+use crate::geometry::MeshData;
 use crate::limits::shown_path;
 use crate::scene::build::textures::MaterialImages;
 use crate::scene::build::{Context, mtl, obj};
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{Dialect, MeshData, OWN_MATERIAL};
+use crate::scene::model::{Dialect, OWN_MATERIAL};
 
 /// The `MaterialIndex` that set the current material: its value and where.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

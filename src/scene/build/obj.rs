@@ -5,12 +5,13 @@ use std::cell::RefCell;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
 
+use crate::geometry::MeshData;
 use crate::limits::shown_path;
 use crate::limits::{MAX_MESH_BYTES, read_within};
 use crate::math::{Point3, Vec3};
 use crate::scene::build::degenerate::triangle_without_area;
 use crate::scene::build::obj_check;
-use crate::scene::model::{MeshData, OWN_MATERIAL};
+use crate::scene::model::OWN_MATERIAL;
 
 /// A `.mtl` file as read: where it is and its text (to find the lines of
 /// fields for messages).

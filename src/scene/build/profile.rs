@@ -1,12 +1,12 @@
 //! The profile curve of a `RevSurface`: its control points, their limit, and
 //! the warnings for profiles that sweep no area or have a span that is a point.
 
+use crate::geometry::{CurveKind, Profile};
 use crate::limits::MAX_CONTROL_POINTS;
 use crate::limits::shown;
 use crate::scene::ast::{Block, ItemKind};
 use crate::scene::build::Context;
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{CurveKind, Profile};
 
 /// `BezierCurve { controls [x y z]* }` or `BsplineCurve { ... }`. `None`
 /// (with a warning) for a profile that sweeps no area: all its controls at
