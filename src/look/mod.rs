@@ -11,7 +11,7 @@
 //! | `physical` | this project's physically based rendering | path tracing | 5 | background, weighted, at every depth | when the scene has no emitter | yes | exact Fresnel |
 //! | `pa1` | the course framework's ray caster (Achazwl, aliezlo `rc`, Cambrian's first renders) | ray casting: Phong per light, no shadows, pixel centres | 1 | background | always | the framework's | none |
 //! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick; its sphere test (frosted glass balls); texels times the colour, its texture frames, its dispersion (one wavelength per camera sample times its colour) |
-//! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing by BSDF sampling, rays leaving from the hit itself | 15 hits | background, unweighted, at every depth | never | no | Schlick; planes one-sided; square lens |
+//! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing by BSDF sampling, rays leaving from the hit itself | 15 hits | background, unweighted, at every depth | never | no | Schlick; planes one-sided and hit at distance 0 too; square lens |
 //! | `osb` | one-step-beh1nd | path tracing | unlimited (roulette) | black | never | no | reflect with 0.25 + R/2, unweighted; osb's `glossy` weight |
 //! | `ylc` | ylc2001 | path tracing | unlimited (roulette) | background, unweighted | never | no | Schlick |
 //! | `yzc` | yuzc19 | path tracing | 11 | background, weighted | never | no | Schlick; horizontal `angle`; square lens |
