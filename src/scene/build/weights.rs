@@ -1,12 +1,13 @@
 //! Resolving the fields of one material into normalised weights, IOR and emission.
 
+use crate::bsdf::AngularWeights;
 use crate::color::Color;
 use crate::scene::build::Context;
 use crate::scene::build::lobes::add_lobes;
 use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::build::textures::SurfaceMapRef;
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{AngularWeights, Dialect, Material};
+use crate::scene::model::{Dialect, Material};
 use crate::uv_rule::UvRule;
 
 #[derive(Clone, Copy, Debug, PartialEq)]

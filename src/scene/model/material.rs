@@ -2,6 +2,7 @@
 //! of the original's lobes, the lobes some dialects add, its images and
 //! how they are read).
 
+use crate::bsdf::{AngularWeights, ConductorFresnel, MIN_ROUGHNESS};
 use crate::checker::Checker;
 use crate::color::Color;
 use crate::medium::Medium;
@@ -115,10 +116,6 @@ impl Default for Material {
     }
 }
 
-/// Below this GGX `alpha`, a microfacet lobe is treated as perfectly smooth
-/// (a delta lobe): its distribution is too narrow to evaluate in floating point.
-pub const MIN_ROUGHNESS: f64 = 1e-3;
-
 /// A height map: the grey value `g` of the texture (in [0, 1]) lifts the
 /// surface along its normal by `scale * (2 g - 1)` world units.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -139,17 +136,6 @@ pub enum DiffuseModel {
     CookTorrance { alpha: f64, f0: f64 },
 }
 
-/// The Fresnel term of a conductor.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ConductorFresnel {
-    /// The colour itself at every angle (the coursework metals, and
-    /// Mitsuba's conductor of material `none`).
-    Constant,
-    /// Schlick's approximation from the colour as the reflectance at normal
-    /// incidence.
-    Schlick,
-}
-
 /// A Phong lobe, energy-normalised: `color (n + 2) / (2 pi) cos^n(alpha)`,
 /// alpha the angle between the reflected direction and the light.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -166,15 +152,4 @@ pub struct Coat {
     /// Reflectance (constant Fresnel) or reflectance at normal incidence (Schlick).
     pub color: Color,
     pub fresnel: ConductorFresnel,
-}
-
-/// cav's angle-dependent weights: reflection `base + scale (1 - cos)^power`
-/// from outside (inside a dielectric the term is scaled up so that it reaches
-/// `base + scale` at the critical angle; beyond it everything reflects),
-/// refraction `base + scale` minus that, diffuse the rest.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct AngularWeights {
-    pub base: f64,
-    pub scale: f64,
-    pub power: f64,
 }
