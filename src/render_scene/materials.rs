@@ -39,6 +39,7 @@ fn render_material(material: &Material, textures: &[Arc<Texture>], look: Look) -
         lobes: lobe_set(material, look.lobes()),
         color: SurfaceColor { source, tint },
         emission: material.emission,
+        boost: material.boost,
         normal_map: image(material.normal_map),
         bump: material
             .bump

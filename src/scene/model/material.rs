@@ -16,7 +16,12 @@ use crate::uv_rule::UvRule;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
     pub color: Color,
+    /// What the material emits, its `boost` (or `illumination`) included.
     pub emission: Color,
+    /// The factor `boost` (rub) or `illumination` put into `emission`: rub's
+    /// renderer applies it only to emitters seen after a bounce, so the
+    /// `rub` look divides it out of emitters seen directly.
+    pub boost: f64,
     pub diffuse: f64,
     pub specular: f64,
     pub refract: f64,
@@ -74,6 +79,7 @@ impl Material {
     pub const DEFAULT: Material = Material {
         color: Color::WHITE,
         emission: Color::BLACK,
+        boost: 1.0,
         diffuse: 1.0,
         specular: 0.0,
         refract: 0.0,
