@@ -12,6 +12,18 @@
 #![forbid(unsafe_code)]
 // A failed `eprintln!` panics: messages go through `stderr_line!` (console.rs).
 #![deny(clippy::print_stderr)]
+// Library code returns errors for bad input; tests may unwrap.
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic,
+        clippy::unreachable,
+        clippy::todo,
+        clippy::unimplemented
+    )
+)]
 
 pub mod accel;
 pub mod adaptive;

@@ -156,6 +156,11 @@ impl Emitters {
     }
 
     /// Whether light sampling has nothing to pick.
+    /// Every entry: one per emitting shape (a mesh's triangle each).
+    pub fn entries(&self) -> &[Emitter] {
+        &self.entries
+    }
+
     pub fn is_empty(&self) -> bool {
         self.distribution.is_none()
     }

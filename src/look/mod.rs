@@ -21,7 +21,7 @@
 //! paths long before, as it did in those renderers, without bias.
 
 use crate::bsdf::DielectricFresnel;
-use crate::bsdf::build::LookLobes;
+use crate::bsdf::LookLobes;
 use crate::geometry::SphereTest;
 use crate::scene::model::{CameraDesc, FovAxis, LensShape, Scene};
 use crate::world::ShapeRules;

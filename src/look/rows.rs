@@ -270,8 +270,26 @@ impl Look {
         ..Look::WSO
     };
 
+    /// 1rubbishyuan/path_tracing: its recursive estimator with ad-hoc
+    /// factors (`integrator::rub`), light from `lightColor` materials only,
+    /// misses that return the background at every depth, every sample
+    /// through the integer pixel coordinate, and its output `sqrt(c)`.
+    pub const RUB: Look = Look {
+        name: "rub",
+        renderer: "1rubbishyuan/path_tracing (its recursive estimator)",
+        integrator: Integrator::Rub,
+        max_depth: UNLIMITED,
+        miss: Miss::Weighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        pixels: PixelSampling::Corner,
+        output: OutputCurve::SquareRoot,
+        emitters_reflect: false,
+        ..Look::ORIGINAL
+    };
+
     /// Every look, by name.
-    pub const ALL: [Look; 24] = [
+    pub const ALL: [Look; 25] = [
         Look::ORIGINAL,
         Look::PHYSICAL,
         Look::PA1,
@@ -296,5 +314,6 @@ impl Look {
         Look::SHU,
         Look::RE2,
         Look::ALZ_PT,
+        Look::RUB,
     ];
 }

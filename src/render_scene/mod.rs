@@ -17,6 +17,7 @@
 use std::sync::Arc;
 
 mod casters;
+pub mod lobes;
 mod materials;
 mod notices;
 mod visibility;

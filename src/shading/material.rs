@@ -23,6 +23,9 @@ pub struct RenderMaterial {
     /// The colour that tints the weighted lobes at a hit.
     pub color: SurfaceColor,
     pub emission: Color,
+    /// The factor already in `emission` that rub's renderer applies only
+    /// to emitters seen after a bounce (`Material::boost`).
+    pub boost: f64,
     /// A tangent-space normal map.
     pub normal_map: Option<Arc<Texture>>,
     /// A height map, and the world units a grey step of 1 lifts the surface.

@@ -172,6 +172,14 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         says: "chen-yingfa's path tracer",
     },
     Fingerprint {
+        // Its words (`perDiffuse`, `cookTorrence`, `lightColor`,
+        // `defocusAngle`, `Quad`) are its own.
+        dialects: &[Dialect::Rub],
+        evidence: Evidence::Dialect,
+        look: Look::RUB,
+        says: "1rubbishyuan's recursive estimator",
+    },
+    Fingerprint {
         dialects: &[Dialect::Cyy],
         evidence: Evidence::Dialect,
         look: Look::CYY,
