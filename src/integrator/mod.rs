@@ -2,10 +2,10 @@
 //! [`RenderScene`].
 
 pub mod caustics;
-pub mod lights;
 pub mod original;
 pub mod path;
 pub mod path_log;
+pub mod point_lights;
 pub mod raycast;
 pub mod rub;
 pub mod scatter;

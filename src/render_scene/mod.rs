@@ -28,7 +28,7 @@ pub use visibility::{MAX_CROSSINGS, SHADOW_REACH, SHADOW_SHORTENING, ShadowTarge
 
 use crate::camera::{Camera, MIN_LENS_RADIUS};
 use crate::color::Color;
-use crate::lights::Emitters;
+use crate::emitters::Emitters;
 use crate::look::{
     DispersionSensor, Integrator, Look, Miss, PixelSampling, PointLights, TextureFrames,
     TextureRows,

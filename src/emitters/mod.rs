@@ -12,10 +12,11 @@
 //! emitting disks and parallelograms in the world (the scene builder makes
 //! them), so they are sampled like any other. The PA1 point and directional
 //! lights are not in this table: both integrators add them in
-//! `integrator::lights`. A static sphere light cut by infinite planes is
+//! `integrator::point_lights`. A static sphere light cut by infinite planes is
 //! sampled on the cap on the shading point's side (`cut`). The same table
 //! starts the light subpaths of caustics (`emission`).
 
+pub mod cosine;
 pub mod cut;
 pub mod distribution;
 pub mod emission;
