@@ -14,7 +14,7 @@
 //! normal side only, and visible points gather them from their first hit
 //! (direct light too: no light sample).
 
-use super::{Integrator, Look, Miss, PointLights};
+use super::{Integrator, Look, Miss, OutputCurve, PointLights};
 use crate::scene::model::FovAxis;
 
 /// How a camera path adds an emitter it sees.
@@ -41,8 +41,11 @@ pub struct PhotonLook {
     pub initial_radius: f64,
     pub alpha: f64,
     pub seen_emission: SeenEmission,
-    /// The gamma its image writer applies (2 for a square root).
-    pub output_gamma: Option<f64>,
+    /// The hits of a photon that can be gathered: Tschal-rsa's roulette
+    /// from its 7th hit divides a surviving photon's power by its largest
+    /// channel (emission x 1000 times the colours so far, thousands), so
+    /// its later hits add almost nothing.
+    pub photon_hits: u32,
 }
 
 /// Looks are compared whole (a render-time scene is built for one); the
@@ -56,7 +59,7 @@ const ALIEZLO: PhotonLook = PhotonLook {
     initial_radius: 0.01,
     alpha: 0.7,
     seen_emission: SeenEmission::Plain,
-    output_gamma: None,
+    photon_hits: u32::MAX,
 };
 
 impl Look {
@@ -74,9 +77,10 @@ impl Look {
             photons_per_pass: 200_000,
             initial_radius: 0.316_227_766_016_837_94,
             seen_emission: SeenEmission::Clamped,
-            output_gamma: Some(2.0),
+            photon_hits: 6,
             ..ALIEZLO
         }),
+        output: OutputCurve::SquareRoot,
         miss: Miss::Weighted,
         point_lights: PointLights::Never,
         phong_lobes: false,

@@ -53,7 +53,15 @@ pub fn trace(
     };
     // A visible point is itself a scattering vertex: a photon after
     // `max_depth - 1` bounces can reach none.
-    let last_bounce = scene.max_depth().saturating_sub(1);
+    // A look's photons are gathered at their first `photon_hits` hits.
+    let look_hits = scene
+        .look()
+        .photons
+        .map_or(u32::MAX, |look| look.photon_hits);
+    let last_bounce = scene
+        .max_depth()
+        .saturating_sub(1)
+        .min(look_hits.saturating_sub(1));
     // Direct light is the camera side's light sample, except in a
     // photon-mapping look, whose photons bring it.
     let first_gather = if scene.look().photons.is_some() { 0 } else { 1 };
