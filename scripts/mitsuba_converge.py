@@ -196,7 +196,7 @@ def main():
                      "mean_ratio_rgb": m["mean_ratio_rgb"]})
         print(f"{spp:>6}{seconds:>10.3f}{m['rmse']:>14.6e}{m['rel_mse']:>14.6e}{ssim:>10.4f}"
               f"{warm:>11.3f}", flush=True)
-        with open(csv_path, "w") as f:  # same format as src/converge.rs
+        with open(csv_path, "w") as f:  # same format as src/render/converge.rs
             f.write("spp,seconds,rmse,rel_mse,ssim\n")
             for r in rows:
                 f.write(f"{r['spp']},{r['seconds']:.6f},{r['rmse']:.8e},{r['rel_mse']:.8e},"

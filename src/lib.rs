@@ -26,18 +26,13 @@
 )]
 
 pub mod accel;
-pub mod adaptive;
 pub mod allocation;
 pub mod bsdf;
 pub mod camera;
-pub mod checkpoint;
 pub mod color;
 pub mod console;
-pub mod converge;
-pub mod debug_sample;
 pub mod emitters;
 pub mod film;
-pub mod film_file;
 pub mod fixed_sum;
 pub mod geometry;
 pub mod image_io;
@@ -49,12 +44,9 @@ pub mod math;
 pub mod medium;
 pub mod metrics;
 pub mod pairs;
-pub mod photon_render;
 pub mod plot;
 pub mod preview;
-pub mod progress;
 pub mod render;
-pub mod render_job;
 pub mod render_scene;
 pub mod rng;
 pub mod sampler;
@@ -69,11 +61,11 @@ pub mod world;
 
 // The few names a program that renders needs (the rest stay in their modules).
 pub use color::Color;
-pub use debug_sample::{SampleTrace, trace_sample};
 pub use film::Film;
 pub use image_io::Image;
 pub use integrator::Integrator;
 pub use look::Look;
+pub use render::debug_sample::{SampleTrace, trace_sample};
 pub use render::{RenderSettings, RenderStats, Renderer, render};
 pub use render_scene::{RenderScene, SceneSettings};
 pub use sampler::SamplerKind;

@@ -4,11 +4,11 @@
 
 mod common;
 
-use pathtracer::adaptive::{MIN_SAMPLES, StoppingRule, progress_for};
 use pathtracer::color::Color;
 use pathtracer::film::Film;
 use pathtracer::integrator::Integrator;
 use pathtracer::math::Vec3;
+use pathtracer::render::adaptive::{MIN_SAMPLES, StoppingRule, progress_for};
 use pathtracer::render::{RenderSettings, RenderStats, Renderer, render_into};
 use pathtracer::render_scene::RenderScene;
 use pathtracer::sampler::SamplerKind;
@@ -147,5 +147,5 @@ fn render_adaptively(
 ) -> Result<RenderStats, String> {
     let progress = progress_for(film, settings.spp, rule);
     let renderer = Renderer::new(scene, settings, progress)?;
-    pathtracer::adaptive::render_adaptive(&renderer, rule, film)
+    pathtracer::render::adaptive::render_adaptive(&renderer, rule, film)
 }

@@ -8,12 +8,12 @@ mod common;
 use std::path::Path;
 
 use pathtracer::color::Color;
-use pathtracer::debug_sample::trace_sample;
 use pathtracer::film::Film;
 use pathtracer::image_io::read_image;
 use pathtracer::integrator::Integrator;
 use pathtracer::integrator::path_log::PathEvent;
 use pathtracer::look::Look;
+use pathtracer::render::debug_sample::trace_sample;
 use pathtracer::render::{RenderSettings, render_into};
 use pathtracer::render_scene::RenderScene;
 use pathtracer::sampler::SamplerKind;

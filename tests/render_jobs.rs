@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use pathtracer::film_file::read_film;
+use pathtracer::render::film_file::read_film;
 
 fn pathtracer(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_pathtracer"))

@@ -16,7 +16,7 @@ use pathtracer::integrator::Integrator;
 use pathtracer::integrator::sppm::{PhotonSettings, photon};
 use pathtracer::look::Look;
 use pathtracer::math::{Point3, Vec3};
-use pathtracer::photon_render;
+use pathtracer::render::photon_passes;
 use pathtracer::render::{RenderSettings, render};
 use pathtracer::sampler::{Sampler, SamplerKind};
 use pathtracer::scene::model::{Material, Object, Scene};
@@ -47,7 +47,7 @@ fn photon_mapped(scene: &Scene, settings: &RenderSettings, photons: u64, radius:
         initial_radius: Some(radius),
         ..PhotonSettings::default()
     };
-    let (image, stats) = photon_render::render(&ready, settings, photons, false).expect("renders");
+    let (image, stats) = photon_passes::render(&ready, settings, photons, false).expect("renders");
     assert_eq!(stats.dropped, 0, "NaN or infinite samples");
     image
 }

@@ -5,17 +5,17 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use pathtracer::converge::{
-    ConvergencePoint, Reach, converge_within, read_csv_series, time_to_reach, to_csv,
-};
 use pathtracer::image_io::{
     Encoding, PendingFile, commit_together, encode_image, read_image, refuse_inputs,
     refuse_shared_outputs,
 };
 use pathtracer::integrator::Integrator;
 use pathtracer::limits::{MAX_TABLE_BYTES, read_text_within};
-use pathtracer::photon_render;
 use pathtracer::plot::{Series, check_plottable, log_log_svg};
+use pathtracer::render::converge::{
+    ConvergencePoint, Reach, converge_within, read_csv_series, time_to_reach, to_csv,
+};
+use pathtracer::render::photon_passes;
 use pathtracer::render::render_within;
 
 use super::{SamplingOptions, default_output, load_for_render, render_scene};
@@ -141,7 +141,7 @@ pub fn run(args: &ConvergeArgs) -> Result<(), String> {
     };
     let points = if settings.integrator == Integrator::Sppm {
         let photons = args.sampling.photons.settings();
-        photon_render::converge(
+        photon_passes::converge(
             &scene,
             &settings,
             photons,

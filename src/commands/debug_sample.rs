@@ -1,9 +1,9 @@
 //! `pathtracer render SCENE --debug-sample x,y,i`: one pixel sample
-//! re-traced alone, its path printed (see `pathtracer::debug_sample`).
+//! re-traced alone, its path printed (see `pathtracer::render::debug_sample`).
 
 use std::path::Path;
 
-use pathtracer::debug_sample::trace_sample;
+use pathtracer::render::debug_sample::trace_sample;
 
 use super::{SamplingOptions, load_for_render, render_scene};
 

@@ -6,10 +6,10 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use pathtracer::film_file::encode_film;
 use pathtracer::image_io::{PendingFile, check_writable, refuse_inputs};
+use pathtracer::render::film_file::encode_film;
+use pathtracer::render::job::{Crop, JobHeader, parse_samples};
 use pathtracer::render::render_into;
-use pathtracer::render_job::{Crop, JobHeader, parse_samples};
 
 use super::{SamplingOptions, load_for_render, render_scene};
 

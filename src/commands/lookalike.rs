@@ -20,7 +20,7 @@ use pathtracer::metrics::resample::box_resize;
 use pathtracer::pairs::measure::measure;
 use pathtracer::pairs::report::{Figures, Row, RunDescription, csv, html, summary};
 use pathtracer::pairs::{Confidence, Pair, read_pairs, render_size};
-use pathtracer::photon_render;
+use pathtracer::render::photon_passes;
 use pathtracer::render::render;
 use pathtracer::scene::{LoadOptions, load_scene};
 use pathtracer::spectral::Dispersion;
@@ -271,7 +271,7 @@ impl PairJob<'_> {
         let scene = render_scene(scene, &settings);
         // Photon mapping renders whole passes (`--spp` of them), not a film.
         let rendered = if settings.integrator == Integrator::Sppm {
-            photon_render::render(&scene, &settings, sampling.photons.settings(), false)
+            photon_passes::render(&scene, &settings, sampling.photons.settings(), false)
         } else {
             render(&scene, &settings)
         };

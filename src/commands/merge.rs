@@ -6,12 +6,12 @@ use std::path::PathBuf;
 use clap::Args;
 
 use pathtracer::film::Film;
-use pathtracer::film_file::{encode_film, read_film};
 use pathtracer::image_io::{
     PendingFile, check_writable, commit_together, encode_image, is_hdr, refuse_inputs,
     refuse_shared_outputs,
 };
-use pathtracer::render_job::{Crop, JobHeader, Part, check_parts};
+use pathtracer::render::film_file::{encode_film, read_film};
+use pathtracer::render::job::{Crop, JobHeader, Part, check_parts};
 
 use super::EncodingOptions;
 use super::sidecar::{Made, sidecar_json, sidecar_path};

@@ -5,18 +5,18 @@ use std::time::{Duration, Instant};
 
 use clap::Args;
 
-use pathtracer::adaptive::{StoppingRule, progress_for, render_adaptive};
-use pathtracer::checkpoint::{
-    CHECKPOINT_SECONDS, CheckpointStats, Checkpoints, checkpoint_path, render_resumable,
-};
 use pathtracer::image_io::{
     Encoding, PendingFile, check_writable, commit_together, encode_image, is_hdr, refuse_inputs,
 };
 use pathtracer::integrator::{Integrator, split};
 use pathtracer::interrupt;
-use pathtracer::photon_render;
+use pathtracer::render::adaptive::{StoppingRule, progress_for, render_adaptive};
+use pathtracer::render::checkpoint::{
+    CHECKPOINT_SECONDS, CheckpointStats, Checkpoints, checkpoint_path, render_resumable,
+};
+use pathtracer::render::job::{Crop, JobHeader};
+use pathtracer::render::photon_passes;
 use pathtracer::render::{Progress, RenderSettings, Renderer};
-use pathtracer::render_job::{Crop, JobHeader};
 use pathtracer::render_scene::RenderScene;
 
 use super::sidecar::{Made, sidecar_json, sidecar_path};
@@ -196,7 +196,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let mut photon_image = None;
     let (stats, written) = if settings.integrator == Integrator::Sppm {
         let photons = args.sampling.photons.settings();
-        let (image, stats) = photon_render::render(&scene, &settings, photons, true)?;
+        let (image, stats) = photon_passes::render(&scene, &settings, photons, true)?;
         photon_image = Some(image);
         (stats, CheckpointStats::default())
     } else if adaptive {

@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use pathtracer::image_io::Encoding;
-use pathtracer::render_job::JobHeader;
+use pathtracer::render::job::JobHeader;
 use pathtracer::side_files::side_file_path;
 
 /// `IMAGE.json`, cut to a name that fits (see [`side_file_path`]).

@@ -58,7 +58,7 @@ impl Integrator {
             Integrator::WhittedUnshadowed => {
                 whitted::radiance_unshadowed(scene, ray, scene.max_depth())
             }
-            // Photon mapping renders whole passes (`photon_render`), not
+            // Photon mapping renders whole passes (`render::photon_passes`), not
             // camera samples: `Renderer::new` refuses it. A camera sample
             // gets the path integrator's estimate, the image SPPM converges to.
             Integrator::Sppm => return path::radiance(scene, ray, sample, sampler, splats, log),

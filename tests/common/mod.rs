@@ -23,7 +23,7 @@ use pathtracer::image_io::Image;
 use pathtracer::integrator::Integrator;
 use pathtracer::integrator::sppm::PhotonSettings;
 use pathtracer::look::Look;
-use pathtracer::photon_render;
+use pathtracer::render::photon_passes;
 use pathtracer::render::{RenderSettings, RenderStats, render};
 use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::scene::model::{Material, Object, Scene};
@@ -165,7 +165,7 @@ pub fn render_ready(
     settings: &RenderSettings,
 ) -> Result<(Image, RenderStats), String> {
     if settings.integrator == Integrator::Sppm {
-        photon_render::render(scene, settings, PhotonSettings::default(), false)
+        photon_passes::render(scene, settings, PhotonSettings::default(), false)
     } else {
         render(scene, settings)
     }

@@ -48,7 +48,7 @@ fn paragraph(text: &str, start: &str) -> String {
 
 #[test]
 fn help_readme_and_guide_give_target_error_the_same_rule() {
-    let floor = format!("{}", pathtracer::adaptive::ABSOLUTE_FLOOR);
+    let floor = format!("{}", pathtracer::render::adaptive::ABSOLUTE_FLOOR);
     assert_eq!(floor, "0.001");
     let help = paragraph(&help(&["render"]), "--target-error <");
     let readme = std::fs::read_to_string(root().join("README.md")).expect("README");

@@ -16,7 +16,7 @@
 //! camera ray of pass `k` draws its numbers from (`p`, `k`, seed), photon
 //! `i` of pass `k` from (`k`, `i`, seed), and gathered flux is summed in
 //! fixed point. The render driver, with the parallel loops of a pass, is
-//! `crate::photon_render`.
+//! `photon_passes` in `src/render/`.
 //!
 //! Not here (the render command says so): checkpoints and resuming, render
 //! jobs, adaptive stopping, media, dispersion (one index), Cambrian's

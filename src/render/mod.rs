@@ -1,6 +1,15 @@
 //! The only parallel code: rows of the film rendered by rayon, every pixel
 //! sample with its own generator seeded from (pixel, sample index, seed).
 
+pub mod adaptive;
+pub mod checkpoint;
+pub mod converge;
+pub mod debug_sample;
+pub mod film_file;
+pub mod job;
+pub mod photon_passes;
+pub mod progress;
+
 use std::io::IsTerminal;
 use std::ops::Range;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -15,7 +24,7 @@ use crate::integrator::{CameraSample, Integrator, Splats};
 use crate::interrupt;
 use crate::limits::MemoryBudget;
 use crate::look::Look;
-pub use crate::progress::{PROGRESS_LOG_SECONDS, Progress};
+pub use crate::render::progress::{PROGRESS_LOG_SECONDS, Progress};
 use crate::render_scene::{RenderScene, SceneSettings};
 use crate::sampler::{Sampler, SamplerKind};
 use crate::spectral::Dispersion;

@@ -15,11 +15,11 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::film::Film;
-use crate::film_file::{encode_film, read_film_within};
 use crate::image_io::write_atomically;
 use crate::limits::MemoryBudget;
+use crate::render::film_file::{encode_film, read_film_within};
+use crate::render::job::{JobHeader, first_difference};
 use crate::render::{RenderStats, Renderer, Samples, Stop, Stopped};
-use crate::render_job::{JobHeader, first_difference};
 use crate::side_files::side_file_path;
 
 /// Seconds between checkpoints by default. Writing the film of a 1024x768

@@ -30,7 +30,7 @@ use exr::meta::MetaData;
 use crate::film::{Film, PixelSum};
 use crate::fixed_sum::{FixedColor, FixedSquares};
 use crate::limits::{MemoryBudget, read_within};
-use crate::render_job::JobHeader;
+use crate::render::job::JobHeader;
 
 /// Written in every film file; a reader refuses other versions.
 const FORMAT_VERSION: &str = "1";
@@ -253,7 +253,7 @@ mod tests {
     use super::*;
     use crate::color::Color;
     use crate::film::SplatSums;
-    use crate::render_job::Crop;
+    use crate::render::job::Crop;
 
     fn header(width: u32, height: u32) -> JobHeader {
         JobHeader::from_fields(|name| {

@@ -8,12 +8,12 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
-use crate::converge::{ConvergencePoint, cut};
 use crate::image_io::Image;
 use crate::interrupt;
 use crate::math::Aabb;
 use crate::metrics::compare;
-use crate::progress::Progress;
+use crate::render::converge::{ConvergencePoint, cut};
+use crate::render::progress::Progress;
 use crate::render::{RenderSettings, RenderStats, Stopped};
 use crate::render_scene::RenderScene;
 use crate::rng::mix64;
@@ -285,7 +285,7 @@ pub fn render(
                 use std::io::IsTerminal;
                 let every = settings
                     .progress_every
-                    .unwrap_or(crate::progress::PROGRESS_LOG_SECONDS);
+                    .unwrap_or(crate::render::progress::PROGRESS_LOG_SECONDS);
                 progress.report(std::io::stderr().is_terminal(), every, &finished)
             })
         });
