@@ -172,6 +172,9 @@ pub struct Look {
     pub dispersion_sensor: DispersionSensor,
     /// How spheres meet rays (Cambrian's test for its glass balls).
     pub sphere_test: SphereTest,
+    /// Whether surfaces of revolution turn about z (jefflyy's: the
+    /// profile's y becomes z) rather than about y.
+    pub revolutions_about_z: bool,
     /// A photon-mapping renderer's conventions (`photons`); `None`: this
     /// project's photon mapping, when `--integrator sppm` asks for it.
     pub photons: Option<PhotonLook>,
@@ -204,6 +207,7 @@ impl Look {
             one_sided_planes: self.one_sided_planes,
             planes_accept_zero: self.planes_accept_zero,
             sphere_test: self.sphere_test,
+            revolutions_about_z: self.revolutions_about_z,
         }
     }
 

@@ -35,6 +35,7 @@ impl Look {
         lens_shape: None,
         dispersion_sensor: DispersionSensor::Spectral,
         sphere_test: SphereTest::Robust,
+        revolutions_about_z: false,
         photons: None,
         output: OutputCurve::Framework,
         emitters_reflect: true,
@@ -73,6 +74,9 @@ impl Look {
         max_depth: 5,
         point_lights: PointLights::Always,
         pixels: PixelSampling::Corner,
+        // Its RevSurface turns the profile about z
+        // (`jefflyy/CG_2022spring:include/revsurface.hpp`).
+        revolutions_about_z: true,
         ..Look::PA1
     };
 
