@@ -124,7 +124,7 @@ pub enum TextureFrames {
     /// Our shapes' uv, the image stretched over them.
     Shapes,
     /// Cambrian's: sphere longitudes from -z and rectangles that cut the
-    /// image instead of stretching it (see [`crate::texture_frames`]).
+    /// image instead of stretching it (see [`crate::render_scene::texture_frames`]).
     Cambrian,
 }
 
