@@ -83,10 +83,13 @@ converge: build
 	$(BIN) converge $(SCENE) --max-spp $(SPP)
 
 # How alike our renders look to the images the coursework renderers wrote
-# for the same scenes: the `ok` pairs of ../shared/reference/pairs.tsv at
-# 160 px wide and 64 spp, one after another (about 2.5 minutes on 2 cores),
-# into output/lookalike/ (index.html, lookalike.csv, images/).
-PAIRS ?= ../shared/reference/pairs.tsv
+# for the same scenes: the `ok` pairs of ../shared/reference/pairs.tsv (the
+# repositories' own renders) and of ../shared/reference/oracle-pairs.tsv
+# (renders made by building the renderers' own code), at 160 px wide and
+# 64 spp, one after another (about 4 minutes on 2 cores), into
+# output/lookalike/ (index.html with ours, theirs and their difference per
+# pair, lookalike.csv, images/), summed up file by file.
+PAIRS ?= ../shared/reference/pairs.tsv ../shared/reference/oracle-pairs.tsv
 lookalike: build
 	$(BIN) lookalike $(PAIRS) --only ok --out output/lookalike
 

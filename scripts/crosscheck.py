@@ -66,7 +66,7 @@ import time
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-RELATIVE_MSE_EPSILON = 1e-2  # as src/metrics.rs
+RELATIVE_MSE_EPSILON = 1e-2  # as src/metrics/mod.rs
 ORIGINAL_PLANE_SCALE = 0.5135  # the original's image-plane height at distance 1
 PLANE_HALF_SIZE = 1e4
 PLANE_TEXELS_PER_UNIT = 10.0  # as src/geometry/plane.rs
@@ -230,7 +230,7 @@ def mitsuba_medium(medium):
     return {"type": "homogeneous", "sigma_t": rgb(sigma_t), "albedo": rgb(albedo),
             "scale": 1.0, "phase": {"type": "hg", "g": float(medium["g"])}}
 CAMBRIAN_TYPES = {"DIFF": (1.0, 0.0, 0.0), "SPEC": (0.0, 1.0, 0.0), "REFR": (0.0, 0.0, 1.0)}
-MIN_ROUGHNESS = 1e-3  # as src/scene/model.rs: below it, mirror and smooth glass
+MIN_ROUGHNESS = 1e-3  # as src/bsdf/microfacet.rs: below it, mirror and smooth glass
 
 
 def resolve_path(relative, scene_path):

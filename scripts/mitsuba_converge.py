@@ -24,7 +24,7 @@ not be translated exactly). Steps:
    is kept, against other load on a shared machine.
    Ours (`pathtracer converge`) renders progressively and reports cumulative
    time; both columns are "wall clock to obtain an N-spp image".
-3. rmse and rel_mse (as src/metrics.rs: mean over pixels and channels of
+3. rmse and rel_mse (as src/metrics/mod.rs: mean over pixels and channels of
    (a-b)^2/(b^2+1e-2)) against Mitsuba's own reference; ssim by
    `target/release/pathtracer compare --json` on the saved PFMs (NaN if the
    binary is absent or --no-ssim).

@@ -12,18 +12,30 @@
 #![forbid(unsafe_code)]
 // A failed `eprintln!` panics: messages go through `stderr_line!` (console.rs).
 #![deny(clippy::print_stderr)]
+// Library code returns errors for bad input; tests may unwrap.
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic,
+        clippy::unreachable,
+        clippy::todo,
+        clippy::unimplemented
+    )
+)]
 
 pub mod accel;
 pub mod adaptive;
 pub mod allocation;
 pub mod bsdf;
 pub mod camera;
-pub mod checker;
 pub mod checkpoint;
 pub mod color;
 pub mod console;
 pub mod converge;
 pub mod debug_sample;
+pub mod emitters;
 pub mod film;
 pub mod film_file;
 pub mod fixed_sum;
@@ -31,7 +43,6 @@ pub mod geometry;
 pub mod image_io;
 pub mod integrator;
 pub mod interrupt;
-pub mod lights;
 pub mod limits;
 pub mod look;
 pub mod math;
@@ -47,17 +58,13 @@ pub mod render_job;
 pub mod render_scene;
 pub mod rng;
 pub mod sampler;
-pub mod sampling;
 pub mod scene;
 pub mod shading;
 pub mod side_files;
 pub mod spectral;
 pub mod subpixel;
-pub mod surface_maps;
 pub mod texture;
-pub mod texture_frames;
 pub mod trig;
-pub mod uv_rule;
 pub mod world;
 
 // The few names a program that renders needs (the rest stay in their modules).

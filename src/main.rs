@@ -3,6 +3,18 @@
 
 // A failed `eprintln!` panics: messages go through `stderr_line!` (console.rs).
 #![deny(clippy::print_stderr)]
+// Bad input is an error message and an exit code, never a panic; tests may unwrap.
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic,
+        clippy::unreachable,
+        clippy::todo,
+        clippy::unimplemented
+    )
+)]
 
 mod commands;
 

@@ -73,7 +73,12 @@ fn an_area_light_seen_directly_shows_its_colour_at_any_size() {
         );
         let scene = load("direct", &text, None);
         assert_eq!(scene.dialect, Dialect::Cyy);
-        for integrator in Integrator::ALL {
+        // rub's estimator returns black for a fifth of its camera rays (its
+        // own rule, tests/rub_look.rs): every other estimator.
+        for integrator in Integrator::ALL
+            .into_iter()
+            .filter(|&i| i != Integrator::Rub)
+        {
             for p in pixels(&scene, &settings(8, 4, integrator)) {
                 assert!(
                     (p.r - 0.25).abs() < 1e-12

@@ -7,6 +7,7 @@ use pathtracer::color::Color;
 use pathtracer::integrator::{CameraSample, Integrator, Splats};
 use pathtracer::look::Look;
 use pathtracer::math::{Ray, Vec3};
+use pathtracer::render_scene::lobes::lobe_set;
 use pathtracer::render_scene::{RenderScene, SceneSettings};
 use pathtracer::rng::Rng;
 use pathtracer::sampler::Sampler;
@@ -66,7 +67,7 @@ fn sin_between(a: &Vec3, b: &Vec3) -> f64 {
 
 #[test]
 fn a_prism_bends_each_wavelength_by_snells_law_with_the_cauchy_index() {
-    let set = LobeSet::from_material(&glass(Some(CAUCHY)), Default::default());
+    let set = lobe_set(&glass(Some(CAUCHY)), Default::default());
     // A 30 degree prism, apex up, in the xy plane; outward face normals.
     // (Cambrian's glass has an index near 2.4: at 60 degrees the light
     // would be reflected inside.)

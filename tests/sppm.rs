@@ -357,3 +357,72 @@ Group { numObjects 1 MaterialIndex 0 Sphere { center 0 0 0 radius 1 } }";
     let scene = pathtracer::scene::load_scene(&path, &Default::default()).expect("builds");
     assert_eq!(Look::detect(&scene).0.name, "tsc");
 }
+
+#[test]
+fn a_photon_looks_direct_light_comes_from_its_photons_alone() {
+    // A grey wall at z = -5 facing the camera, lit by a disk light of
+    // radius 20 behind the camera, 80 away, facing it: in Tschal-rsa's
+    // look a photon of power emission x 1000 lands near the axis with
+    // density 1 / (pi (h^2 + R^2)) per unit area, and the wall reflects
+    // `colour x power` of each one. A light sample at the visible point
+    // would add the physical direct light, 0.353 more (2.3x), as it did
+    // before 2026-12-06 (docs/sppm.md, "Tschal-rsa's brightness").
+    let (grey, emission, height, disk) = (0.5, 12.0, 80.0, 20.0);
+    let scene = Scene::new(
+        vec![diffuse(grey), light(emission)],
+        Object::Group(vec![
+            plane(Vec3::z(), -5.0, 0),
+            Object::Disk {
+                center: Point3::new(0.0, 0.0, height - 5.0),
+                normal: -Vec3::z(),
+                radius: disk,
+                material: 1,
+            },
+        ]),
+    );
+    let mut settings = settings(Integrator::Sppm, 8, 8, 3);
+    settings.look = Look::TSC;
+    let image = photon_mapped(&scene, &settings, 1_000_000, 1.0);
+    let centre: Vec<f64> = [(3, 3), (3, 4), (4, 3), (4, 4)]
+        .iter()
+        .map(|&(x, y)| image.pixels[y * image.width + x].average())
+        .collect();
+    let got = centre.iter().sum::<f64>() / centre.len() as f64;
+    let want = grey * emission * 1000.0 / (PI * (height * height + disk * disk));
+    assert!((got - want).abs() < 0.05 * want, "{got} vs {want}");
+}
+
+#[test]
+fn tschals_photons_are_gathered_at_their_first_six_hits_only() {
+    // In a closed white furnace no photon escapes: with 20 scattering
+    // vertices allowed, this renderer's photons reach their 7th hit and
+    // beyond, Tschal-rsa's stop adding at their 6th (its roulette then
+    // divides their power by thousands).
+    let scene = furnace(0.999, 1.0);
+    let mut deepest = Vec::new();
+    for look in [Look::TSC, Look::ORIGINAL] {
+        let mut settings = settings(Integrator::Sppm, 4, 1, 0);
+        settings.look = look;
+        settings.max_depth = 20;
+        let ready = ready(scene.clone(), &settings);
+        let mut last = 0;
+        for i in 0..2_000 {
+            let mut sampler = Sampler::new(SamplerKind::Sobol, 0, i, 5);
+            photon::trace(&ready, &mut sampler, 0.0, &mut |hit| {
+                last = last.max(hit.bounces);
+            });
+        }
+        deepest.push(last);
+    }
+    // `bounces` counts the scattering before a hit: 5 before the 6th.
+    assert_eq!(deepest[0], 5, "tsc");
+    assert!(deepest[1] > 5, "original: {}", deepest[1]);
+}
+
+#[test]
+fn tschals_look_writes_the_square_root_of_its_average() {
+    // Its image writer stores clamp(sqrt(c)): a quarter is written as a half.
+    assert_eq!(Look::TSC.output.apply_channel(0.25), 0.5);
+    assert_eq!(Look::TSC.output.apply_channel(4.0), 1.0);
+    assert_eq!(Look::ORIGINAL.output.apply_channel(0.25), 0.25);
+}

@@ -164,3 +164,28 @@ fn han_traces_through_pixel_corners() {
     assert_eq!(corners.pixels[0].r, 0.25, "han: the left corner misses it");
     assert_eq!(corners.pixels[1].r, 0.25);
 }
+
+#[test]
+fn jef_turns_surfaces_of_revolution_about_z() {
+    // A tube of radius 1 from y = -1 to 1 in the profile, seen from z = 5
+    // down -z under a light along -z: turned about y (the framework's) its
+    // side faces the camera and the middle pixel is lit; turned about z
+    // (jefflyy's: the profile's y becomes z) the camera looks down the tube
+    // and the middle pixel sees the black background through it.
+    let text = "PerspectiveCamera { center 0 0 5 direction 0 0 -1 up 0 1 0 angle 30 width 9 height 9 }\n\
+         Lights { numLights 1 DirectionalLight { direction 0 0 -1 color 1 1 1 } }\n\
+         Background { color 0 0 0 }\n\
+         Materials { numMaterials 1 Material { diffuseColor 0.5 0.5 0.5 } }\n\
+         Group { numObjects 1 MaterialIndex 0 RevSurface { profile BezierCurve { controls \
+         [ 1 -1 0 ] [ 1 -0.3 0 ] [ 1 0.3 0 ] [ 1 1 0 ] } } }";
+    let middle = |look: Look| {
+        let image = render_text("revolution-axis", text, look);
+        image.pixels[4 * 9 + 4].g
+    };
+    assert_eq!(middle(Look::JEF), 0.0);
+    let about_y = Look {
+        revolutions_about_z: false,
+        ..Look::JEF
+    };
+    assert!(middle(about_y) > 0.4, "{}", middle(about_y));
+}

@@ -7,10 +7,20 @@
 
 use super::LobeSample;
 use super::fresnel::schlick;
-use super::microfacet::Ggx;
+use super::microfacet::{Ggx, MIN_ROUGHNESS};
 use crate::color::Color;
 use crate::math::Vec3;
-use crate::scene::model::{ConductorFresnel, MIN_ROUGHNESS};
+
+/// The Fresnel term of a conductor.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ConductorFresnel {
+    /// The colour itself at every angle (the coursework metals, and
+    /// Mitsuba's conductor of material `none`).
+    Constant,
+    /// Schlick's approximation from the colour as the reflectance at normal
+    /// incidence.
+    Schlick,
+}
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Conductor {

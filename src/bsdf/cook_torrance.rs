@@ -24,16 +24,23 @@ pub struct CookTorrance {
 
 impl CookTorrance {
     fn value(&self, wo: &Vec3, wi: &Vec3) -> f64 {
+        self.value_about(&Vec3::z(), wo, wi)
+    }
+
+    /// rub's scalar `F D G / max(4 cos_o cos_i, 0.001)` about the unit
+    /// normal `n` (world directions; the colour and the cosine left out).
+    pub fn value_about(&self, n: &Vec3, wo: &Vec3, wi: &Vec3) -> f64 {
         let Some(h) = (wo + wi).try_normalize(1e-12) else {
             return 0.0;
         };
+        let (cos_o, cos_i, cos_h) = (n.dot(wo), n.dot(wi), n.dot(&h));
         let a2 = self.alpha * self.alpha;
-        let t = h.z * h.z * (a2 - 1.0) + 1.0;
+        let t = cos_h * cos_h * (a2 - 1.0) + 1.0;
         let d = a2 / (RUB_PI * t * t);
         let k = (self.alpha + 1.0).powi(2) / 8.0;
         let g1 = |c: f64| c / (c * (1.0 - k) + k);
         let f = self.f0 + (1.0 - self.f0) * (1.0 - wo.dot(&h).clamp(0.0, 1.0)).powi(5);
-        f * d * g1(wo.z) * g1(wi.z) / (4.0 * wo.z * wi.z).max(0.001)
+        f * d * g1(cos_o) * g1(cos_i) / (4.0 * cos_o * cos_i).max(0.001)
     }
 
     pub fn sample(&self, wo: &Vec3, u: [f64; 2]) -> Option<LobeSample> {

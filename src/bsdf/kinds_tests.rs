@@ -2,6 +2,7 @@
 //! samples, the probability of a kind against sampling frequencies, and
 //! the transport mode at a non-reciprocal surface.
 
+use super::ConductorFresnel;
 use super::conductor::Conductor;
 use super::dielectric::Dielectric;
 use super::fresnel::DielectricFresnel;
@@ -11,7 +12,6 @@ use super::{Bsdf, BsdfFlags, GlassChoice, Lobe, LobeSet, Rules, TransportMode};
 use crate::color::Color;
 use crate::math::Vec3;
 use crate::rng::Rng;
-use crate::scene::model::ConductorFresnel;
 
 const WHITE: Color = Color::new(1.0, 1.0, 1.0);
 

@@ -10,6 +10,7 @@
 //! - `pdf(wo, wi)`: the density with which `sample` produces `wi`, 0 for
 //!   delta lobes.
 
+use super::ConductorFresnel;
 use super::conductor::Conductor;
 use super::cook_torrance::CookTorrance;
 use super::dielectric::Dielectric;
@@ -22,7 +23,6 @@ use super::phong::Phong;
 use super::rough_dielectric::RoughDielectric;
 use crate::color::Color;
 use crate::math::Vec3;
-use crate::scene::model::ConductorFresnel;
 
 /// A sampled direction of one lobe (see the module documentation).
 #[derive(Clone, Copy, Debug)]

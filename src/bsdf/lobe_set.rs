@@ -3,8 +3,7 @@
 
 use arrayvec::ArrayVec;
 
-use super::{BsdfFlags, Lobe, MAX_LOBES};
-use crate::scene::model::ConductorFresnel;
+use super::{AngularWeights, BsdfFlags, ConductorFresnel, Lobe, MAX_LOBES};
 use crate::spectral::Dispersion;
 
 /// The lobes of a material and what does not depend on the hit: their
@@ -26,7 +25,7 @@ pub struct LobeSet {
     /// The probability of the continuous lobes, when fixed.
     pub(super) fixed_smooth: f64,
     /// cav's weights of lobes 0, 1, 2 (diffuse, conductor, dielectric).
-    pub(super) angular: Option<crate::scene::model::AngularWeights>,
+    pub(super) angular: Option<AngularWeights>,
     pub(super) ior: f64,
     /// The dispersion of its dielectric lobe (none without one).
     pub(super) dispersion: Option<Dispersion>,
@@ -39,6 +38,23 @@ pub struct LobeSet {
 }
 
 impl LobeSet {
+    /// No lobes yet, for a material whose dielectrics have index `ior`
+    /// inside; with `angular` weights, the first three lobes pushed (diffuse,
+    /// conductor, dielectric) take their weights per hit and are kept at
+    /// any weight.
+    pub fn new(ior: f64, angular: Option<AngularWeights>) -> LobeSet {
+        LobeSet {
+            ior,
+            angular,
+            ..LobeSet::default()
+        }
+    }
+
+    /// Gives its dielectric lobe `dispersion` (an index per wavelength).
+    pub fn set_dispersion(&mut self, dispersion: Option<Dispersion>) {
+        self.dispersion = dispersion;
+    }
+
     /// Adds `lobe` with `weight`; `tinted`: its tint becomes the hit's
     /// colour. Lobes beyond [`MAX_LOBES`] and non-positive weights are
     /// dropped. A dielectric is given as seen from outside.
@@ -46,7 +62,9 @@ impl LobeSet {
         self.push_slot(lobe, weight, tinted, true);
     }
 
-    pub(super) fn push_slot(&mut self, lobe: Lobe, weight: f64, tinted: bool, follows_rules: bool) {
+    /// [`LobeSet::push`], and `follows_rules`: whether a dielectric takes the
+    /// rendering's Fresnel term (cav's glass keeps none).
+    pub fn push_slot(&mut self, lobe: Lobe, weight: f64, tinted: bool, follows_rules: bool) {
         let usable = weight > 0.0 && weight.is_finite() || self.angular.is_some();
         if self.lobes.len() == MAX_LOBES || !usable {
             return;

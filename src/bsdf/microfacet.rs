@@ -11,6 +11,10 @@ use std::f64::consts::PI;
 use crate::math::Vec3;
 use crate::trig::sin_cos_turns;
 
+/// Below this GGX `alpha`, a microfacet lobe is treated as perfectly smooth
+/// (a delta lobe): its distribution is too narrow to evaluate in floating point.
+pub const MIN_ROUGHNESS: f64 = 1e-3;
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ggx {
     pub alpha: f64,

@@ -10,7 +10,8 @@
 //! A BSDF is a mixture of weighted lobes (`lobe`): the rates of the
 //! original (`diffusionRate`, `specularRate`, `refractRate`) become the
 //! weights of a diffuse, a conductor and a dielectric lobe, and the lobes
-//! some dialects add (Phong, a GGX coat) come with weight 1 (`build`).
+//! some dialects add (Phong, a GGX coat) come with weight 1
+//! (`render_scene::lobes` makes them from a material's description).
 //! What does not depend on the hit is a [`LobeSet`], made once per material
 //! before rendering; a [`Bsdf`] is a lobe set at one hit (its colour, its
 //! shading frame, its side of a dielectric), a few words to make.
@@ -28,7 +29,7 @@
 //! surface; `wo` is on the side of the shading normal the BSDF was built
 //! with.
 
-pub mod build;
+mod angular;
 pub mod conductor;
 pub mod cook_torrance;
 pub mod dielectric;
@@ -42,6 +43,7 @@ pub mod microfacet;
 pub mod osb_glossy;
 pub mod phong;
 pub mod rough_dielectric;
+mod rules;
 
 #[cfg(test)]
 mod kinds_tests;
@@ -54,13 +56,16 @@ use crate::color::Color;
 use crate::math::{Vec3, orthonormal_basis};
 use crate::spectral::Dispersion;
 
-pub use build::Rules;
+pub use angular::AngularWeights;
+pub use conductor::ConductorFresnel;
 pub use dielectric::GlassChoice;
 pub use flags::{BsdfFlags, TransportMode};
 pub use fresnel::DielectricFresnel;
 pub use lambert::Lambert;
 pub use lobe::{Lobe, LobeSample};
 pub use lobe_set::LobeSet;
+pub use microfacet::MIN_ROUGHNESS;
+pub use rules::{LookLobes, Rules};
 
 /// The most lobes one material makes (diffuse, conductor, dielectric, Phong, coat).
 pub const MAX_LOBES: usize = 5;

@@ -98,27 +98,6 @@ mod tests {
     }
 
     #[test]
-    fn only_the_osb_look_swaps_the_coat_for_it() {
-        use crate::bsdf::LobeSet;
-        use crate::look::Look;
-        use crate::scene::model::Material;
-        let glossy = Material {
-            osb_glossy: true,
-            coat: Some(crate::scene::model::Coat {
-                alpha: ALPHA,
-                color: Color::gray(F0),
-                fresnel: crate::scene::model::ConductorFresnel::Schlick,
-            }),
-            ..Material::DEFAULT
-        };
-        assert_eq!(LobeSet::from_material(&glossy, Look::OSB.lobes()).len(), 1);
-        assert_eq!(
-            LobeSet::from_material(&glossy, Look::PHYSICAL.lobes()).len(),
-            2
-        );
-    }
-
-    #[test]
     fn at_the_mirror_direction_the_weight_saturates() {
         let lobe = OsbGlossy {
             color: Color::gray(0.7),

@@ -6,6 +6,7 @@
 
 use std::f64::consts::PI;
 
+use super::ConductorFresnel;
 use super::conductor::Conductor;
 use super::cook_torrance::CookTorrance;
 use super::fresnel::DielectricFresnel;
@@ -17,7 +18,6 @@ use super::{Bsdf, BsdfFlags, GlassChoice, Lobe as L, LobeSet, Rules};
 use crate::color::Color;
 use crate::math::Vec3;
 use crate::rng::Rng;
-use crate::scene::model::ConductorFresnel;
 
 const WHITE: Color = Color::WHITE;
 

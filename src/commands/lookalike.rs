@@ -14,11 +14,13 @@ use clap::Args;
 use pathtracer::image_io::{
     DisplayImage, PendingFile, commit_together, read_image_encoded, refuse_inputs, write_image,
 };
+use pathtracer::integrator::Integrator;
 use pathtracer::look::Look;
 use pathtracer::metrics::resample::box_resize;
 use pathtracer::pairs::measure::measure;
 use pathtracer::pairs::report::{Figures, Row, RunDescription, csv, html, summary};
 use pathtracer::pairs::{Confidence, Pair, read_pairs, render_size};
+use pathtracer::photon_render;
 use pathtracer::render::render;
 use pathtracer::scene::{LoadOptions, load_scene};
 use pathtracer::spectral::Dispersion;
@@ -267,7 +269,12 @@ impl PairJob<'_> {
         }
         let settings = sampling.settings(&scene, self.spp, true);
         let scene = render_scene(scene, &settings);
-        let rendered = render(&scene, &settings);
+        // Photon mapping renders whole passes (`--spp` of them), not a film.
+        let rendered = if settings.integrator == Integrator::Sppm {
+            photon_render::render(&scene, &settings, sampling.photons.settings(), false)
+        } else {
+            render(&scene, &settings)
+        };
         let seconds = started.elapsed().as_secs_f64();
         let ours = match rendered {
             Ok((mut image, _)) => {

@@ -135,7 +135,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
             checkpoint.display()
         ));
     }
-    let mut encoding = args.encoding.encoding();
+    let encoding = args.encoding.encoding();
     encoding.check()?;
     let mut image_file = PendingFile::reserve(&output)?;
     // The checkpoint's name fits and its folder takes files: a signal or
@@ -179,12 +179,6 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         header,
     };
     check_photon_options(args, &settings)?;
-    if let Some(gamma) = settings.look.photons.and_then(|look| look.output_gamma)
-        && encoding.gamma.is_none()
-    {
-        // The look's image writer encodes (Tschal-rsa's square root).
-        encoding.gamma = Some(gamma);
-    }
     let mut film = args.sampling.film(&settings)?;
     if args.resume {
         match checkpoints.read(args.sampling.scene.memory_budget())? {

@@ -7,7 +7,7 @@
 //! space: [`Shape::to_world`] gives the transformed shape where one of the
 //! same kind exists (a sphere under a similarity, a triangle, a
 //! parallelogram); a disk samples in its own space and maps the point
-//! through its transform (see `lights::emitter`).
+//! through its transform (see `emitters::emitter`).
 
 use std::f64::consts::PI;
 

@@ -2,11 +2,13 @@
 //! [`RenderScene`].
 
 pub mod caustics;
-pub mod lights;
 pub mod original;
 pub mod path;
 pub mod path_log;
+pub mod point_lights;
+pub mod ppm;
 pub mod raycast;
+pub mod rub;
 pub mod scatter;
 pub mod split;
 pub mod sppm;
@@ -52,6 +54,7 @@ impl Integrator {
             Integrator::Path if scene.media() => volpath::radiance(scene, ray, sampler),
             Integrator::Path => return path::radiance(scene, ray, sample, sampler, splats, log),
             Integrator::RayCast => raycast::radiance(scene, ray),
+            Integrator::Rub => rub::radiance(scene, ray, sampler),
             Integrator::Whitted => whitted::radiance_shadowed(scene, ray, scene.max_depth()),
             Integrator::WhittedUnshadowed => {
                 whitted::radiance_unshadowed(scene, ray, scene.max_depth())

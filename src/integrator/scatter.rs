@@ -11,7 +11,7 @@ use crate::sampler::Sampler;
 use crate::shading::Shading;
 use crate::spectral::PathSpectrum;
 
-use super::lights;
+use super::point_lights;
 
 /// The BSDF of `at` for light leaving towards `wo`, with the look's
 /// conventions and the estimator's way of choosing between reflection and
@@ -69,7 +69,7 @@ pub fn pa1_lights(
     if scene.direct_lights().is_empty() {
         Color::BLACK
     } else {
-        lights::direct(scene, at, bsdf, wo, spectrum)
+        point_lights::direct(scene, at, bsdf, wo, spectrum)
     }
 }
 

@@ -27,15 +27,15 @@ use std::f64::consts::PI;
 
 use crate::bsdf::{Bsdf, BsdfFlags, GlassChoice};
 use crate::color::Color;
-use crate::lights::LightSample;
+use crate::emitters::LightSample;
 use crate::math::{Point3, Ray, Vec3};
 use crate::medium::{Flight, Medium};
 use crate::render_scene::{MAX_CROSSINGS, RenderScene, ShadowTarget};
 use crate::sampler::Sampler;
 use crate::shading::Shading;
 
-use super::lights;
 use super::path::{ROULETTE_DEPTH, power_heuristic};
+use super::point_lights;
 use super::scatter::{bsdf_at, emitter_choice, miss, sample};
 
 /// Where the current ray left a vertex by a continuous lobe or the phase
@@ -196,7 +196,7 @@ fn roulette(throughput: &mut Color, depth: u32, sampler: &mut Sampler) -> bool {
 }
 
 /// An emitter point for a light sample from `point` (see
-/// [`crate::lights::Emitters::sample`]).
+/// [`crate::emitters::Emitters::sample`]).
 fn sample_light(
     scene: &RenderScene,
     point: &Point3,
@@ -241,7 +241,7 @@ fn medium_light_sample(
 }
 
 /// The PA1 point, spot and directional lights at a surface (as
-/// [`lights::direct`], with the transmittance of the media on the way
+/// [`point_lights::direct`], with the transmittance of the media on the way
 /// instead of an opaque-or-not shadow ray).
 fn surface_pa1_lights(
     scene: &RenderScene,
@@ -252,7 +252,7 @@ fn surface_pa1_lights(
 ) -> Color {
     let mut sum = Color::BLACK;
     for light in scene.direct_lights() {
-        let Some(way) = lights::toward(light, &at.point) else {
+        let Some(way) = point_lights::toward(light, &at.point) else {
             continue;
         };
         if at.geometric.dot(&way.to_light) <= 0.0 {
@@ -281,7 +281,7 @@ fn surface_pa1_lights(
 fn medium_pa1_lights(scene: &RenderScene, medium: &Medium, point: &Point3, travel: &Vec3) -> Color {
     let mut sum = Color::BLACK;
     for light in scene.direct_lights() {
-        let Some(way) = lights::toward(light, point) else {
+        let Some(way) = point_lights::toward(light, point) else {
             continue;
         };
         let phase = medium.phase.eval(travel, &way.to_light);

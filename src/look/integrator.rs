@@ -28,19 +28,25 @@ pub enum Integrator {
     /// Schlick's weight times `specularColor` and the refracted ray by the
     /// rest, at index 1 (emily-jia's; see `integrator::whitted`).
     WhittedUnshadowed,
+    /// 1rubbishyuan's recursive estimator with its ad-hoc factors (direct
+    /// light x1500, the diffuse bounce x1000, both over the depth, clamps
+    /// per term, death with probability 0.2 at every call, never
+    /// reweighted; see `integrator::rub`).
+    Rub,
     /// Stochastic progressive photon mapping (see `integrator::sppm`):
     /// passes of visible points and photons, rendered by `sppm::render`.
     Sppm,
 }
 
 impl Integrator {
-    pub const ALL: [Integrator; 6] = [
+    pub const ALL: [Integrator; 7] = [
         Integrator::Path,
         Integrator::Original,
         Integrator::RayCast,
         Integrator::Sppm,
         Integrator::Whitted,
         Integrator::WhittedUnshadowed,
+        Integrator::Rub,
     ];
 
     /// Whether it draws no random numbers: one camera ray through a fixed
@@ -60,6 +66,7 @@ impl Integrator {
             Integrator::RayCast => "raycast",
             Integrator::Whitted => "whitted",
             Integrator::WhittedUnshadowed => "whitted-unshadowed",
+            Integrator::Rub => "rub",
             Integrator::Sppm => "sppm",
         }
     }

@@ -21,7 +21,7 @@
 //! paths long before, as it did in those renderers, without bias.
 
 use crate::bsdf::DielectricFresnel;
-use crate::bsdf::build::LookLobes;
+use crate::bsdf::LookLobes;
 use crate::geometry::SphereTest;
 use crate::scene::model::{CameraDesc, FovAxis, LensShape, Scene};
 use crate::world::ShapeRules;
@@ -36,7 +36,7 @@ mod summary;
 pub use integrator::Integrator;
 pub use material_rules::LobeChoice;
 pub use output::OutputCurve;
-pub use photons::{PhotonLook, SeenEmission};
+pub use photons::{PhotonLook, PhotonMethod, SeenEmission};
 pub use summary::summary;
 
 /// How a look renders dispersive glass.
@@ -124,7 +124,7 @@ pub enum TextureFrames {
     /// Our shapes' uv, the image stretched over them.
     Shapes,
     /// Cambrian's: sphere longitudes from -z and rectangles that cut the
-    /// image instead of stretching it (see [`crate::texture_frames`]).
+    /// image instead of stretching it (see [`crate::render_scene::texture_frames`]).
     Cambrian,
 }
 
@@ -172,6 +172,9 @@ pub struct Look {
     pub dispersion_sensor: DispersionSensor,
     /// How spheres meet rays (Cambrian's test for its glass balls).
     pub sphere_test: SphereTest,
+    /// Whether surfaces of revolution turn about z (jefflyy's: the
+    /// profile's y becomes z) rather than about y.
+    pub revolutions_about_z: bool,
     /// A photon-mapping renderer's conventions (`photons`); `None`: this
     /// project's photon mapping, when `--integrator sppm` asks for it.
     pub photons: Option<PhotonLook>,
@@ -204,6 +207,7 @@ impl Look {
             one_sided_planes: self.one_sided_planes,
             planes_accept_zero: self.planes_accept_zero,
             sphere_test: self.sphere_test,
+            revolutions_about_z: self.revolutions_about_z,
         }
     }
 

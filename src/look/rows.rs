@@ -35,6 +35,7 @@ impl Look {
         lens_shape: None,
         dispersion_sensor: DispersionSensor::Spectral,
         sphere_test: SphereTest::Robust,
+        revolutions_about_z: false,
         photons: None,
         output: OutputCurve::Framework,
         emitters_reflect: true,
@@ -73,6 +74,9 @@ impl Look {
         max_depth: 5,
         point_lights: PointLights::Always,
         pixels: PixelSampling::Corner,
+        // Its RevSurface turns the profile about z
+        // (`jefflyy/CG_2022spring:include/revsurface.hpp`).
+        revolutions_about_z: true,
         ..Look::PA1
     };
 
@@ -270,8 +274,26 @@ impl Look {
         ..Look::WSO
     };
 
+    /// 1rubbishyuan/path_tracing: its recursive estimator with ad-hoc
+    /// factors (`integrator::rub`), light from `lightColor` materials only,
+    /// misses that return the background at every depth, every sample
+    /// through the integer pixel coordinate, and its output `sqrt(c)`.
+    pub const RUB: Look = Look {
+        name: "rub",
+        renderer: "1rubbishyuan/path_tracing (its recursive estimator)",
+        integrator: Integrator::Rub,
+        max_depth: UNLIMITED,
+        miss: Miss::Weighted,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        pixels: PixelSampling::Corner,
+        output: OutputCurve::SquareRoot,
+        emitters_reflect: false,
+        ..Look::ORIGINAL
+    };
+
     /// Every look, by name.
-    pub const ALL: [Look; 24] = [
+    pub const ALL: [Look; 26] = [
         Look::ORIGINAL,
         Look::PHYSICAL,
         Look::PA1,
@@ -289,6 +311,7 @@ impl Look {
         Look::JMS,
         Look::ALZ_SPPM,
         Look::YZC_SPPM,
+        Look::YAO,
         Look::YJX,
         Look::CYF,
         Look::AFB,
@@ -296,5 +319,6 @@ impl Look {
         Look::SHU,
         Look::RE2,
         Look::ALZ_PT,
+        Look::RUB,
     ];
 }

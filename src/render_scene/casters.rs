@@ -7,8 +7,8 @@
 //! plane, that is certain without tracing it, and the ray is skipped: the
 //! image is the same, with fewer world queries.
 
+use crate::emitters::Emitters;
 use crate::geometry::Shape;
-use crate::lights::Emitters;
 use crate::math::{Aabb, Point3, Ray, Vec3};
 use crate::scene::model::Scene;
 use crate::world::{Primitive, World};
@@ -207,7 +207,7 @@ mod tests {
                 rng.next_f64() * 6.0 - 1.9,
                 rng.next_f64() * 8.0 - 8.0,
             );
-            let direction = crate::sampling::cosine_hemisphere(
+            let direction = crate::emitters::cosine::cosine_hemisphere(
                 &Vec3::new(0.0, 1.0, 0.0),
                 [rng.next_f64(), rng.next_f64()],
             );

@@ -4,7 +4,7 @@
 
 use std::sync::Arc;
 
-use crate::bsdf::LobeSet;
+use super::lobes::lobe_set;
 use crate::look::Look;
 use crate::scene::model::{Material, Scene};
 use crate::shading::{ColorSource, RenderMaterial, SurfaceColor};
@@ -36,9 +36,10 @@ fn render_material(material: &Material, textures: &[Arc<Texture>], look: Look) -
     };
     let tint = (look.texture_times_color && material.texture.is_some()).then_some(material.color);
     RenderMaterial {
-        lobes: LobeSet::from_material(material, look.lobes()),
+        lobes: lobe_set(material, look.lobes()),
         color: SurfaceColor { source, tint },
         emission: material.emission,
+        boost: material.boost,
         normal_map: image(material.normal_map),
         bump: material
             .bump

@@ -17,8 +17,10 @@
 use std::sync::Arc;
 
 mod casters;
+pub mod lobes;
 mod materials;
 mod notices;
+pub mod texture_frames;
 mod visibility;
 
 pub use casters::Casters;
@@ -27,7 +29,7 @@ pub use visibility::{MAX_CROSSINGS, SHADOW_REACH, SHADOW_SHORTENING, ShadowTarge
 
 use crate::camera::{Camera, MIN_LENS_RADIUS};
 use crate::color::Color;
-use crate::lights::Emitters;
+use crate::emitters::Emitters;
 use crate::look::{
     DispersionSensor, Integrator, Look, Miss, PixelSampling, PointLights, TextureFrames,
     TextureRows,
@@ -383,7 +385,7 @@ fn adapt(scene: &mut Scene, look: &Look) {
         .iter_mut()
         .for_each(|material| look.adapt_material(material));
     if look.texture_frames == TextureFrames::Cambrian {
-        crate::texture_frames::apply_cambrian(scene);
+        crate::render_scene::texture_frames::apply_cambrian(scene);
     }
     if look.texture_rows == TextureRows::Down {
         scene

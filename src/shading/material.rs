@@ -5,14 +5,14 @@
 
 use std::sync::Arc;
 
+use super::surface_maps;
 use crate::bsdf::LobeSet;
-use crate::checker::Checker;
+use crate::bsdf::phong::Phong;
 use crate::color::Color;
 use crate::medium::Medium;
-use crate::scene::model::Phong;
-use crate::surface_maps;
 use crate::texture::Texture;
-use crate::uv_rule::UvRule;
+use crate::texture::checker::Checker;
+use crate::texture::uv_rule::UvRule;
 use crate::world::WorldHit;
 
 /// One material, ready for shading.
@@ -23,14 +23,17 @@ pub struct RenderMaterial {
     /// The colour that tints the weighted lobes at a hit.
     pub color: SurfaceColor,
     pub emission: Color,
+    /// The factor already in `emission` that rub's renderer applies only
+    /// to emitters seen after a bounce (`Material::boost`).
+    pub boost: f64,
     /// A tangent-space normal map.
     pub normal_map: Option<Arc<Texture>>,
     /// A height map, and the world units a grey step of 1 lifts the surface.
     pub bump: Option<(Arc<Texture>, f64)>,
     /// PA1's `specularColor` and `shininess` (what ray casting shades with).
     pub phong: Option<Phong>,
-    /// The medium inside the shapes of this material (see
-    /// [`crate::scene::model::Material::interior`]).
+    /// The medium inside the shapes of this material (the scene material's
+    /// `interior`: a ray that crosses their surface inwards enters it).
     pub interior: Option<Medium>,
     /// Rays cross the surface unchanged: the boundary of a medium.
     pub interface: bool,

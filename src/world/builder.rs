@@ -8,7 +8,20 @@ use crate::geometry::MeshData;
 use crate::geometry::{
     Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, Transform, Triangle,
 };
+use crate::math::Matrix;
 use crate::scene::model::Object;
+
+/// The map that swaps y and z (its own inverse): a surface of revolution
+/// about y becomes the same profile turned about z.
+fn swap_y_z() -> Transform {
+    let m = Matrix::new(
+        1.0, 0.0, 0.0, 0.0, //
+        0.0, 0.0, 1.0, 0.0, //
+        0.0, 1.0, 0.0, 0.0, //
+        0.0, 0.0, 0.0, 1.0,
+    );
+    Transform::new(m, m)
+}
 
 #[derive(Default)]
 pub(super) struct Builder {
@@ -108,6 +121,19 @@ impl Builder {
             Object::Revolution { profile, .. } => {
                 Revolution::new(profile).map(|r| Shape::Revolution(Arc::new(r)))
             }
+        };
+        let about_z = self.rules.revolutions_about_z
+            && matches!(object, Object::Revolution { .. })
+            && shape.is_some();
+        let swapped;
+        let transform = if about_z {
+            swapped = match transform {
+                Some(parent) => parent.compose(&swap_y_z()),
+                None => swap_y_z(),
+            };
+            Some(&swapped)
+        } else {
+            transform
         };
         let material = object.material().unwrap_or(0);
         let face_materials = match object {

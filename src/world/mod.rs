@@ -89,6 +89,9 @@ pub struct ShapeRules {
     /// Planes are hit at distance 0 too (see [`crate::geometry::Plane::accepts_zero`]).
     pub planes_accept_zero: bool,
     pub sphere_test: SphereTest,
+    /// Surfaces of revolution turn their profile's (x, y) about the **z**
+    /// axis, the profile's y becoming z (jefflyy's), instead of about y.
+    pub revolutions_about_z: bool,
 }
 
 /// The box a linear primitive is culled by (see `World::linear_boxes`):

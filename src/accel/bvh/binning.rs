@@ -3,7 +3,7 @@
 //! large nodes (the merge is exact, so the bins do not depend on the
 //! chunking).
 
-use super::build::{Bounds, Item};
+use super::binary_tree::{Bounds, Item};
 use wide::f32x4;
 
 /// Number of SAH bins per axis.

@@ -4,7 +4,7 @@
 
 use rayon::prelude::*;
 
-use super::build::{BinaryNode, Bounds};
+use super::binary_tree::{BinaryNode, Bounds};
 use super::wide::{MAX_COUNT, Node, W, quantise};
 
 type Children = arrayvec::ArrayVec<Child, W>;

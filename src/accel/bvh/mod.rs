@@ -1,5 +1,5 @@
 //! A bounding volume hierarchy over boxes: a parallel binned-SAH build of a
-//! binary tree (`build`), collapsed (`collapse`) into 8-wide nodes of two
+//! binary tree (`binary_tree`), collapsed (`collapse`) into 8-wide nodes of two
 //! cache lines with child boxes quantised outward to 8 bits (`wide`), and
 //! allocation-free traversal that tests the eight child boxes at once
 //! (`ray8`), nearest child first (`traverse`; nearest hit: with a
@@ -10,8 +10,8 @@
 //! answer the leaf tests through a closure, one primitive at a time or, for
 //! primitives stored in leaf order, one leaf (a run of slots) at a time.
 
+mod binary_tree;
 mod binning;
-mod build;
 mod collapse;
 mod ray8;
 mod traverse;
@@ -19,7 +19,7 @@ mod wide;
 
 use super::huge_pages::HugeArray;
 use crate::math::{Aabb, Ray, Vec3};
-use build::{Bounds, Item, Leaves, Settings};
+use binary_tree::{Bounds, Item, Leaves, Settings};
 use wide::Node;
 
 /// Deepest binary level the build may create (leaves are forced below it).
@@ -78,7 +78,7 @@ fn collapsed(boxes: &[Aabb], leaves: Leaves) -> Collapsed {
         .filter(|b| b.is_valid())
         .fold(Aabb::empty, |acc, b| acc.union(b))
         .reduce(Aabb::empty, |a, b| a.union(&b));
-    let built = build::build(items, settings);
+    let built = binary_tree::build(items, settings);
     if built.nodes.is_empty() {
         return Collapsed {
             nodes: Vec::new(),

@@ -260,7 +260,7 @@ fn the_parallel_collapse_equals_one_depth_first_pass() {
         let items = boxes
             .iter()
             .enumerate()
-            .map(|(i, b)| build::Item {
+            .map(|(i, b)| binary_tree::Item {
                 bounds: Bounds::from_aabb(b),
                 index: i as u32,
             })
@@ -269,7 +269,7 @@ fn the_parallel_collapse_equals_one_depth_first_pass() {
             leaves: SINGLE,
             max_depth,
         };
-        let binary = build::build(items, settings).nodes;
+        let binary = binary_tree::build(items, settings).nodes;
         let (parallel, depth) = collapse::collapse(&binary);
         let (sequential, sequential_depth) = collapse::collapse_sequentially(&binary);
         // Deep enough that subtrees below the root's children exist.

@@ -7,12 +7,12 @@ use std::f64::consts::PI;
 use super::connect::splat_to_camera;
 use crate::bsdf::{BsdfFlags, GlassChoice, TransportMode};
 use crate::color::Color;
+use crate::emitters::cosine::cosine_hemisphere;
 use crate::integrator::Splats;
 use crate::integrator::scatter::{bsdf_at, emitter_choice, sample};
 use crate::math::{Point3, Ray, Vec3, offset_origin};
 use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
-use crate::sampling::cosine_hemisphere;
 
 /// Salt of the light subpath's sampler (see [`Sampler::fork`]).
 const LIGHT_PATH_SALT: u64 = 0x11A7_C0DE_CA05_71C5;

@@ -30,7 +30,7 @@
 //! pixels, since light tracing spends one subpath per camera sample on the
 //! whole image); `s_y` is the shading-normal correction of `y` for the
 //! chain's direction and `e` the emission density of the light point
-//! (`lights::emission`; directions leave it by the cosine). Both strategies compute `r`
+//! (`emitters::emission`; directions leave it by the cosine). Both strategies compute `r`
 //! from the path alone, so the two weights sum to one for every path they
 //! share; paths a connection cannot make (a light that is not sampled, a
 //! point outside the sampled cap, a specular `x`) keep weight 1 in the path

@@ -14,12 +14,12 @@ use std::f64::consts::PI;
 
 use crate::bsdf::{BsdfFlags, GlassChoice};
 use crate::color::Color;
+use crate::emitters::cosine::cosine_hemisphere;
 use crate::integrator::path::ROULETTE_DEPTH;
 use crate::integrator::scatter::{bsdf_at, emitter_choice, sample};
 use crate::math::{Point3, Ray, Vec3, offset_origin};
 use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
-use crate::sampling::cosine_hemisphere;
 
 /// The largest shading-normal correction of one bounce (it grows without
 /// bound at grazing geometric angles).
@@ -31,7 +31,7 @@ pub struct PhotonHit {
     pub point: Point3,
     /// Unit direction back towards where it came from.
     pub wi: Vec3,
-    /// Its power in units of [`Emitters::photon_power_unit`](crate::lights::Emitters::photon_power_unit).
+    /// Its power in units of [`Emitters::photon_power_unit`](crate::emitters::Emitters::photon_power_unit).
     pub power: Color,
     /// Scattering vertices before this surface.
     pub bounces: u32,
@@ -53,7 +53,15 @@ pub fn trace(
     };
     // A visible point is itself a scattering vertex: a photon after
     // `max_depth - 1` bounces can reach none.
-    let last_bounce = scene.max_depth().saturating_sub(1);
+    // A look's photons are gathered at their first `photon_hits` hits.
+    let look_hits = scene
+        .look()
+        .photons
+        .map_or(u32::MAX, |look| look.photon_hits);
+    let last_bounce = scene
+        .max_depth()
+        .saturating_sub(1)
+        .min(look_hits.saturating_sub(1));
     // Direct light is the camera side's light sample, except in a
     // photon-mapping look, whose photons bring it.
     let first_gather = if scene.look().photons.is_some() { 0 } else { 1 };
@@ -104,7 +112,7 @@ pub fn trace(
 }
 
 /// A photon leaving an emitter at shutter time `time`: its ray and its
-/// power in units of [`Emitters::photon_power_unit`](crate::lights::Emitters::photon_power_unit)
+/// power in units of [`Emitters::photon_power_unit`](crate::emitters::Emitters::photon_power_unit)
 /// (the photons' mean power is the emitters' total power).
 pub fn emit(scene: &RenderScene, sampler: &mut Sampler, time: f64) -> Option<(Ray, Color)> {
     let emitters = scene.emitters();

@@ -82,10 +82,15 @@ pub fn trace<'a>(scene: &'a RenderScene, mut ray: Ray, sampler: &mut Sampler) ->
         };
         if !scattered.is_delta() {
             let smooth = bsdf.probability(BsdfFlags::CONTINUOUS);
-            direct += throughput
-                * light_sample(
-                    scene, &at, &bsdf, &wo, smooth, ray.time, sampler, &rgb, false,
-                );
+            // A photon-mapping look's photons are gathered from their first
+            // hit: they bring the direct light, which a light sample would
+            // add a second time.
+            if scene.look().photons.is_none() {
+                direct += throughput
+                    * light_sample(
+                        scene, &at, &bsdf, &wo, smooth, ray.time, sampler, &rgb, false,
+                    );
+            }
             return CameraPath {
                 direct,
                 visible: Some(VisiblePoint {

@@ -1,5 +1,6 @@
 //! Materials of every dialect normalised to one `Material` (synonyms, §4 conflict rules).
 
+use crate::bsdf::AngularWeights;
 use crate::color::Color;
 use crate::scene::ast::{Block, ItemKind};
 use crate::scene::build::dispersion::read_cauchy;
@@ -8,9 +9,9 @@ use crate::scene::build::textures::{MapName, SurfaceMapRef};
 use crate::scene::build::weights::{Fields, Kind, preset, resolve};
 use crate::scene::build::{Context, Cursor};
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{AngularWeights, Dialect, Material};
+use crate::scene::model::{Dialect, Material};
 use crate::spectral::Dispersion;
-use crate::uv_rule::UvRule;
+use crate::texture::uv_rule::UvRule;
 
 /// A path written in the file, with where it was written.
 #[derive(Clone, Debug, PartialEq)]

@@ -6,7 +6,7 @@ mod degenerate;
 mod descriptor;
 mod dialect;
 pub mod dispersion;
-mod lights;
+mod light_blocks;
 mod lobes;
 mod material;
 mod medium;
@@ -175,7 +175,9 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
                 }
                 camera_block = Some((block, item.location));
             }
-            "Lights" | "DiskLights" => lights.extend(lights::build_lights(&mut context, block)?),
+            "Lights" | "DiskLights" => {
+                lights.extend(light_blocks::build_lights(&mut context, block)?)
+            }
             "Background" => background = build_background(&mut context, block)?,
             "Medium" => {
                 if scene_medium.is_some() {
@@ -246,7 +248,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         .map(textures::MaterialImages::from_spec)
         .collect();
     specs.extend(objects.take_materials());
-    for (material, object) in lights::emitting_geometry(&lights, specs.len()) {
+    for (material, object) in light_blocks::emitting_geometry(&lights, specs.len()) {
         specs.push(textures::MaterialImages::plain(material));
         roots.push(object);
     }

@@ -1,13 +1,14 @@
 //! Resolving the fields of one material into normalised weights, IOR and emission.
 
+use crate::bsdf::AngularWeights;
 use crate::color::Color;
 use crate::scene::build::Context;
 use crate::scene::build::lobes::add_lobes;
 use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::build::textures::SurfaceMapRef;
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{AngularWeights, Dialect, Material};
-use crate::uv_rule::UvRule;
+use crate::scene::model::{Dialect, Material};
+use crate::texture::uv_rule::UvRule;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Kind {
@@ -153,6 +154,15 @@ pub fn resolve(
         }
     } else if let Some(w) = f.weights {
         normalise(w)
+    } else if context.dialect == Dialect::Rub {
+        // rub draws one number against `perDiffuse`, then against
+        // `perDiffuse + perReflect`, and refracts otherwise: `perRefract` is
+        // never read, and a material without weights refracts.
+        let d = f.per[0].unwrap_or(0.0).max(0.0);
+        let s = f.per[1].unwrap_or(0.0).max(0.0);
+        let d = d.min(1.0);
+        let s = s.min(1.0 - d);
+        [d, s, 1.0 - d - s]
     } else if f.per.iter().any(Option::is_some) {
         normalise(f.per.map(|w| w.unwrap_or(0.0)))
     } else if f.reflective.is_some() || f.transmissive.is_some() {
@@ -176,6 +186,7 @@ pub fn resolve(
     let mut material = Material {
         color,
         emission,
+        boost: f.emission_scale.unwrap_or(1.0),
         diffuse: weights[0],
         specular: weights[1],
         refract: weights[2],

@@ -2,11 +2,13 @@
 //! of the original's lobes, the lobes some dialects add, its images and
 //! how they are read).
 
-use crate::checker::Checker;
+use crate::bsdf::phong::Phong;
+use crate::bsdf::{AngularWeights, ConductorFresnel, MIN_ROUGHNESS};
 use crate::color::Color;
 use crate::medium::Medium;
 use crate::spectral::Dispersion;
-use crate::uv_rule::UvRule;
+use crate::texture::checker::Checker;
+use crate::texture::uv_rule::UvRule;
 
 /// One normalised material: the weights of the original's three lobes
 /// (`diffuse + specular + refract`, normally 1), what each of them is, and
@@ -15,7 +17,12 @@ use crate::uv_rule::UvRule;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
     pub color: Color,
+    /// What the material emits, its `boost` (or `illumination`) included.
     pub emission: Color,
+    /// The factor `boost` (rub) or `illumination` put into `emission`: rub's
+    /// renderer applies it only to emitters seen after a bounce, so the
+    /// `rub` look divides it out of emitters seen directly.
+    pub boost: f64,
     pub diffuse: f64,
     pub specular: f64,
     pub refract: f64,
@@ -73,6 +80,7 @@ impl Material {
     pub const DEFAULT: Material = Material {
         color: Color::WHITE,
         emission: Color::BLACK,
+        boost: 1.0,
         diffuse: 1.0,
         specular: 0.0,
         refract: 0.0,
@@ -109,10 +117,6 @@ impl Default for Material {
     }
 }
 
-/// Below this GGX `alpha`, a microfacet lobe is treated as perfectly smooth
-/// (a delta lobe): its distribution is too narrow to evaluate in floating point.
-pub const MIN_ROUGHNESS: f64 = 1e-3;
-
 /// A height map: the grey value `g` of the texture (in [0, 1]) lifts the
 /// surface along its normal by `scale * (2 g - 1)` world units.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -133,25 +137,6 @@ pub enum DiffuseModel {
     CookTorrance { alpha: f64, f0: f64 },
 }
 
-/// The Fresnel term of a conductor.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ConductorFresnel {
-    /// The colour itself at every angle (the coursework metals, and
-    /// Mitsuba's conductor of material `none`).
-    Constant,
-    /// Schlick's approximation from the colour as the reflectance at normal
-    /// incidence.
-    Schlick,
-}
-
-/// A Phong lobe, energy-normalised: `color (n + 2) / (2 pi) cos^n(alpha)`,
-/// alpha the angle between the reflected direction and the light.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Phong {
-    pub color: Color,
-    pub exponent: f64,
-}
-
 /// A conductor lobe added on top of the weights, with its own colour: a
 /// GGX coat (`alpha`), or a mirror at `alpha` 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -160,15 +145,4 @@ pub struct Coat {
     /// Reflectance (constant Fresnel) or reflectance at normal incidence (Schlick).
     pub color: Color,
     pub fresnel: ConductorFresnel,
-}
-
-/// cav's angle-dependent weights: reflection `base + scale (1 - cos)^power`
-/// from outside (inside a dielectric the term is scaled up so that it reaches
-/// `base + scale` at the critical angle; beyond it everything reflects),
-/// refraction `base + scale` minus that, diffuse the rest.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct AngularWeights {
-    pub base: f64,
-    pub scale: f64,
-    pub power: f64,
 }

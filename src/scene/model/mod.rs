@@ -14,9 +14,7 @@ use crate::texture::Texture;
 
 mod material;
 
-pub use material::{
-    AngularWeights, Bump, Coat, ConductorFresnel, DiffuseModel, MIN_ROUGHNESS, Material, Phong,
-};
+pub use material::{Bump, Coat, DiffuseModel, Material};
 
 /// A fully built scene.
 #[derive(Clone, Debug)]

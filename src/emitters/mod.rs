@@ -12,10 +12,11 @@
 //! emitting disks and parallelograms in the world (the scene builder makes
 //! them), so they are sampled like any other. The PA1 point and directional
 //! lights are not in this table: both integrators add them in
-//! `integrator::lights`. A static sphere light cut by infinite planes is
+//! `integrator::point_lights`. A static sphere light cut by infinite planes is
 //! sampled on the cap on the shading point's side (`cut`). The same table
 //! starts the light subpaths of caustics (`emission`).
 
+pub mod cosine;
 pub mod cut;
 pub mod distribution;
 pub mod emission;
@@ -156,6 +157,11 @@ impl Emitters {
     }
 
     /// Whether light sampling has nothing to pick.
+    /// Every entry: one per emitting shape (a mesh's triangle each).
+    pub fn entries(&self) -> &[Emitter] {
+        &self.entries
+    }
+
     pub fn is_empty(&self) -> bool {
         self.distribution.is_none()
     }
