@@ -36,7 +36,7 @@ mod summary;
 pub use integrator::Integrator;
 pub use material_rules::LobeChoice;
 pub use output::OutputCurve;
-pub use photons::{PhotonLook, SeenEmission};
+pub use photons::{PhotonLook, PhotonMethod, SeenEmission};
 pub use summary::summary;
 
 /// How a look renders dispersive glass.
