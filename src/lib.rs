@@ -46,6 +46,7 @@ pub mod metrics;
 pub mod pairs;
 pub mod plot;
 pub mod preview;
+pub mod progress;
 pub mod render;
 pub mod render_scene;
 pub mod rng;

@@ -14,8 +14,8 @@ use pathtracer::image_io::Image;
 use pathtracer::integrator::Integrator;
 use pathtracer::integrator::sppm::PhotonSettings;
 use pathtracer::look::Look;
-use pathtracer::photon_render;
 use pathtracer::render::RenderSettings;
+use pathtracer::render::photon_passes;
 use pathtracer::sampler::SamplerKind;
 use pathtracer::scene::{LoadOptions, load_scene};
 
@@ -48,7 +48,7 @@ fn render(name: &str, text: &str) -> Image {
         dispersion: None,
     };
     let ready = common::ready(scene, &settings);
-    let (image, stats) = photon_render::render(&ready, &settings, PhotonSettings::default(), false)
+    let (image, stats) = photon_passes::render(&ready, &settings, PhotonSettings::default(), false)
         .expect("renders");
     assert_eq!(stats.samples, 5 * 8 * 64, "5 rounds of 8 rays per pixel");
     image

@@ -8,7 +8,6 @@ pub mod debug_sample;
 pub mod film_file;
 pub mod job;
 pub mod photon_passes;
-pub mod progress;
 
 use std::io::IsTerminal;
 use std::ops::Range;
@@ -24,7 +23,7 @@ use crate::integrator::{CameraSample, Integrator, Splats};
 use crate::interrupt;
 use crate::limits::MemoryBudget;
 use crate::look::Look;
-pub use crate::render::progress::{PROGRESS_LOG_SECONDS, Progress};
+pub use crate::progress::{PROGRESS_LOG_SECONDS, Progress};
 use crate::render_scene::{RenderScene, SceneSettings};
 use crate::sampler::{Sampler, SamplerKind};
 use crate::spectral::Dispersion;

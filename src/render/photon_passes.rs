@@ -13,8 +13,8 @@ use crate::interrupt;
 use crate::look::PhotonMethod;
 use crate::math::Aabb;
 use crate::metrics::compare;
+use crate::progress::Progress;
 use crate::render::converge::{ConvergencePoint, cut};
-use crate::render::progress::Progress;
 use crate::render::{RenderSettings, RenderStats, Stopped};
 use crate::render_scene::RenderScene;
 use crate::rng::mix64;
@@ -303,7 +303,7 @@ pub fn render(
                 use std::io::IsTerminal;
                 let every = settings
                     .progress_every
-                    .unwrap_or(crate::render::progress::PROGRESS_LOG_SECONDS);
+                    .unwrap_or(crate::progress::PROGRESS_LOG_SECONDS);
                 progress.report(std::io::stderr().is_terminal(), every, &finished)
             })
         });
