@@ -3,7 +3,7 @@
 renders Mitsuba's albedo and position AOVs of the textured sphere and the
 textured wall of report_scene15_spheres (scalar_rgb, 1 spp, so each pixel is
 one hit) and recomputes, from each hit position, the texel that ours looks up
-(src/geometry/sphere.rs, src/geometry/plane.rs, src/texture.rs).
+(src/geometry/sphere.rs, src/geometry/plane.rs, src/texture/mod.rs).
 
     scripts/mitsuba_texture_check.py [--scene ../shared/scenes/report_scene15_spheres.txt]
 

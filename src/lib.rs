@@ -30,7 +30,6 @@ pub mod adaptive;
 pub mod allocation;
 pub mod bsdf;
 pub mod camera;
-pub mod checker;
 pub mod checkpoint;
 pub mod color;
 pub mod console;
@@ -64,11 +63,8 @@ pub mod shading;
 pub mod side_files;
 pub mod spectral;
 pub mod subpixel;
-pub mod surface_maps;
 pub mod texture;
-pub mod texture_frames;
 pub mod trig;
-pub mod uv_rule;
 pub mod world;
 
 // The few names a program that renders needs (the rest stay in their modules).

@@ -11,6 +11,7 @@ use rayon::prelude::*;
 use crate::converge::{ConvergencePoint, cut};
 use crate::image_io::Image;
 use crate::interrupt;
+use crate::look::PhotonMethod;
 use crate::math::Aabb;
 use crate::metrics::compare;
 use crate::progress::Progress;
@@ -52,6 +53,12 @@ impl<'a> PhotonMapper<'a> {
         settings: &'a RenderSettings,
         photon_settings: PhotonSettings,
     ) -> Result<PhotonMapper<'a>, String> {
+        if is_yao(scene) {
+            return Err(
+                "the yao look's PPM renders whole images (`render`, `lookalike`): not pass by pass"
+                    .to_string(),
+            );
+        }
         let photon_settings = photon_settings.with_look(scene.look());
         photon_settings.check()?;
         if *scene.settings() != settings.scene() {
@@ -246,6 +253,14 @@ impl<'a> PhotonMapper<'a> {
     }
 }
 
+/// Whether `scene`'s look renders by yao-jz's PPM (`integrator::ppm`).
+fn is_yao(scene: &RenderScene) -> bool {
+    scene
+        .look()
+        .photons
+        .is_some_and(|look| look.method == PhotonMethod::Yao)
+}
+
 /// The default initial radius ([`options::RADIUS_DIVISOR`]): from the box
 /// of the first pass's visible points (1 when there are none).
 fn rule_radius(pixels: &[PixelState]) -> f64 {
@@ -273,6 +288,9 @@ pub fn render(
     photon_settings: PhotonSettings,
     stop_on_signal: bool,
 ) -> Result<(Image, RenderStats), String> {
+    if is_yao(scene) {
+        return crate::integrator::ppm::render(scene, settings, photon_settings, stop_on_signal);
+    }
     let start = Instant::now();
     let mut mapper = PhotonMapper::new(scene, settings, photon_settings)?;
     let passes = settings.spp.max(1);

@@ -13,7 +13,7 @@ use pathtracer::image_io::{Image, write_image};
 use pathtracer::math::{Point3, Ray, Vec3};
 use pathtracer::scene::model::Scene;
 use pathtracer::scene::{LoadOptions, load_scene};
-use pathtracer::uv_rule::UvRule;
+use pathtracer::texture::uv_rule::UvRule;
 
 const SIZE: usize = 4;
 

@@ -4,13 +4,14 @@
 
 mod common;
 
+use pathtracer::bsdf::phong::Phong;
 use pathtracer::color::Color;
 use pathtracer::integrator::Integrator;
 use pathtracer::look::Look;
 use pathtracer::math::Vec3;
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
-use pathtracer::scene::model::{Light, Material, Object, Phong, Scene};
+use pathtracer::scene::model::{Light, Material, Object, Scene};
 
 fn settings(look: Look, integrator: Integrator, spp: u32) -> RenderSettings {
     RenderSettings {

@@ -8,13 +8,13 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use pathtracer::checker::Checker;
 use pathtracer::color::Color;
 use pathtracer::image_io::{Image, write_image};
 use pathtracer::math::{Point3, Ray, Vec3};
 use pathtracer::scene::model::Scene;
 use pathtracer::scene::{LoadOptions, MissingAssets, load_scene};
 use pathtracer::texture::Texture;
+use pathtracer::texture::checker::Checker;
 
 /// rub's layout: `root/testcases/scene.txt` next to its descriptors, paths
 /// written from the root. Returns the scene file.

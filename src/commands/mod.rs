@@ -137,7 +137,7 @@ pub struct SamplingOptions {
     pub no_light_paths: bool,
     /// The conventions of the rendering: one coursework renderer's
     /// (`pa1`, `han`, `jef`, `emj`, `cambrian`, `wso`, `osb`, `ylc`, `yzc`,
-    /// `cyy`, `cav`; by photon mapping `tsc`, `jms`, `alz-sppm`, `yzc-sppm`),
+    /// `cyy`, `cav`; by photon mapping `tsc`, `jms`, `alz-sppm`, `yzc-sppm`, `yao`),
     /// the ported renderer's
     /// (`original`) or this project's physically based one (`physical`).
     /// Default: the look of the renderer that wrote the scene, by its

@@ -6,6 +6,7 @@ pub mod original;
 pub mod path;
 pub mod path_log;
 pub mod point_lights;
+pub mod ppm;
 pub mod raycast;
 pub mod rub;
 pub mod scatter;

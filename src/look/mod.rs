@@ -36,7 +36,7 @@ mod summary;
 pub use integrator::Integrator;
 pub use material_rules::LobeChoice;
 pub use output::OutputCurve;
-pub use photons::{PhotonLook, SeenEmission};
+pub use photons::{PhotonLook, PhotonMethod, SeenEmission};
 pub use summary::summary;
 
 /// How a look renders dispersive glass.
@@ -124,7 +124,7 @@ pub enum TextureFrames {
     /// Our shapes' uv, the image stretched over them.
     Shapes,
     /// Cambrian's: sphere longitudes from -z and rectangles that cut the
-    /// image instead of stretching it (see [`crate::texture_frames`]).
+    /// image instead of stretching it (see [`crate::render_scene::texture_frames`]).
     Cambrian,
 }
 

@@ -14,7 +14,7 @@
 //! normal side only, and visible points gather them from their first hit
 //! (direct light too: no light sample).
 
-use super::{Integrator, Look, Miss, OutputCurve, PointLights};
+use super::{Integrator, Look, Miss, OutputCurve, PixelSampling, PointLights};
 use crate::scene::model::FovAxis;
 
 /// How a camera path adds an emitter it sees.
@@ -29,11 +29,24 @@ pub enum SeenEmission {
     Clamped,
 }
 
+/// Which photon-mapping method a renderer used.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PhotonMethod {
+    /// Stochastic progressive photon mapping (`integrator::sppm`), in
+    /// aliezlo's structure.
+    Progressive,
+    /// yao-jz's progressive photon mapping (`integrator::ppm`): every
+    /// branch followed, cone-weighted gathering, rounds of 8 camera rays.
+    Yao,
+}
+
 /// A photon-mapping renderer's conventions.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PhotonLook {
+    pub method: PhotonMethod,
     /// A photon starts with the emission times this (times its emitter's
-    /// share of the photons, see the module documentation).
+    /// share of the photons, see the module documentation); yao-jz's:
+    /// the total brightness of a round's photons.
     pub power: f64,
     /// Photons per round (the default of `--photons-per-pass`).
     pub photons_per_pass: u64,
@@ -54,6 +67,7 @@ impl Eq for PhotonLook {}
 
 /// The aliezlo structure's constants: photons x250, r^2 = 1e-4, alpha 0.7.
 const ALIEZLO: PhotonLook = PhotonLook {
+    method: PhotonMethod::Progressive,
     power: 250.0,
     photons_per_pass: 100_000,
     initial_radius: 0.01,
@@ -127,5 +141,30 @@ impl Look {
             ..ALIEZLO
         }),
         ..Look::YZC
+    };
+
+    /// yao-jz/Computer-Graphics-THU's PPM (`src/main.cpp`): 5 rounds of 8
+    /// camera rays per pixel (`--spp 40`) jittered about the pixel's
+    /// corner, 100,000 photons per round from the point lights of total
+    /// brightness 1800, radius 5 shrinking by 0.95 a round, 6 hits, black
+    /// background; see `integrator::ppm`.
+    pub const YAO: Look = Look {
+        name: "yao",
+        renderer: "yao-jz/Computer-Graphics-THU",
+        integrator: Integrator::Sppm,
+        max_depth: 6,
+        photons: Some(PhotonLook {
+            method: PhotonMethod::Yao,
+            power: 1800.0,
+            photons_per_pass: 100_000,
+            initial_radius: 5.0,
+            photon_hits: 6,
+            ..ALIEZLO
+        }),
+        miss: Miss::Black,
+        point_lights: PointLights::Never,
+        phong_lobes: false,
+        pixels: PixelSampling::Corner,
+        ..Look::ORIGINAL
     };
 }

@@ -293,7 +293,7 @@ impl Look {
     };
 
     /// Every look, by name.
-    pub const ALL: [Look; 25] = [
+    pub const ALL: [Look; 26] = [
         Look::ORIGINAL,
         Look::PHYSICAL,
         Look::PA1,
@@ -311,6 +311,7 @@ impl Look {
         Look::JMS,
         Look::ALZ_SPPM,
         Look::YZC_SPPM,
+        Look::YAO,
         Look::YJX,
         Look::CYF,
         Look::AFB,

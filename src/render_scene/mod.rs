@@ -20,6 +20,7 @@ mod casters;
 pub mod lobes;
 mod materials;
 mod notices;
+pub mod texture_frames;
 mod visibility;
 
 pub use casters::Casters;
@@ -384,7 +385,7 @@ fn adapt(scene: &mut Scene, look: &Look) {
         .iter_mut()
         .for_each(|material| look.adapt_material(material));
     if look.texture_frames == TextureFrames::Cambrian {
-        crate::texture_frames::apply_cambrian(scene);
+        crate::render_scene::texture_frames::apply_cambrian(scene);
     }
     if look.texture_rows == TextureRows::Down {
         scene

@@ -5,14 +5,14 @@
 
 use std::sync::Arc;
 
+use super::surface_maps;
 use crate::bsdf::LobeSet;
-use crate::checker::Checker;
+use crate::bsdf::phong::Phong;
 use crate::color::Color;
 use crate::medium::Medium;
-use crate::scene::model::Phong;
-use crate::surface_maps;
 use crate::texture::Texture;
-use crate::uv_rule::UvRule;
+use crate::texture::checker::Checker;
+use crate::texture::uv_rule::UvRule;
 use crate::world::WorldHit;
 
 /// One material, ready for shading.
@@ -32,8 +32,8 @@ pub struct RenderMaterial {
     pub bump: Option<(Arc<Texture>, f64)>,
     /// PA1's `specularColor` and `shininess` (what ray casting shades with).
     pub phong: Option<Phong>,
-    /// The medium inside the shapes of this material (see
-    /// [`crate::scene::model::Material::interior`]).
+    /// The medium inside the shapes of this material (the scene material's
+    /// `interior`: a ray that crosses their surface inwards enters it).
     pub interior: Option<Medium>,
     /// Rays cross the surface unchanged: the boundary of a medium.
     pub interface: bool,

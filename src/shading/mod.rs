@@ -3,13 +3,13 @@
 //! bump-mapped, see `surface_maps`) oriented towards the incoming ray.
 
 mod material;
+pub mod surface_maps;
 
 pub use material::{ColorSource, RenderMaterial, SurfaceColor};
 
 use crate::bsdf::{Bsdf, Rules};
 use crate::color::Color;
 use crate::math::{Point3, Ray, Vec3};
-use crate::surface_maps;
 use crate::world::{self, WorldHit};
 
 /// A hit seen from the ray that found it.

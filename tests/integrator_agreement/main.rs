@@ -13,13 +13,14 @@ use common::statistic;
 use std::sync::Arc;
 
 use pathtracer::bsdf::ConductorFresnel;
+use pathtracer::bsdf::phong::Phong;
 use pathtracer::color::Color;
 use pathtracer::geometry::MeshData;
 use pathtracer::integrator::{Integrator, original::MAX_DEPTH};
 use pathtracer::math::{Matrix, Point3, Vec3};
 use pathtracer::render::RenderSettings;
 use pathtracer::sampler::SamplerKind;
-use pathtracer::scene::model::{Coat, Light, Material, Object, Phong, Scene};
+use pathtracer::scene::model::{Coat, Light, Material, Object, Scene};
 use pathtracer::texture::Texture;
 
 const WIDTH: u32 = 8;

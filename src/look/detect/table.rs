@@ -65,6 +65,30 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         says: "jefflyy's Whitted ray tracer (its files are the framework's; --look pa1 for its ray caster)",
     },
     Fingerprint {
+        // Its `largeaxis` and `storeaxis` are the framework's files; its
+        // PPM renders them (black: their only light is directional).
+        dialects: &[Dialect::Pa1],
+        evidence: Evidence::Folder {
+            owner: "yao-jz",
+            repository: "Computer-Graphics-THU",
+            repository_alone: false,
+        },
+        look: Look::YAO,
+        says: "yao-jz's photon mapper (its files are the framework's; --look pa1 for its ray caster)",
+    },
+    Fingerprint {
+        // Its scene01, 03, 07 and 08 are the framework's files (its own
+        // parser refuses three of them and divides by zero on the fourth).
+        dialects: &[Dialect::Pa1],
+        evidence: Evidence::Folder {
+            owner: "Tschal-rsa",
+            repository: "rang-kardan",
+            repository_alone: true,
+        },
+        look: Look::TSC,
+        says: "Tschal-rsa's photon mapper (its files are the framework's; --look pa1 for its ray caster)",
+    },
+    Fingerprint {
         dialects: &[Dialect::Pa1],
         evidence: Evidence::Dialect,
         look: Look::PA1,
@@ -132,6 +156,12 @@ pub const FINGERPRINTS: &[Fingerprint] = &[
         evidence: Evidence::Dialect,
         look: Look::TSC,
         says: "Tschal-rsa's photon mapper (its materials' `prop` words)",
+    },
+    Fingerprint {
+        dialects: &[Dialect::Yao],
+        evidence: Evidence::Dialect,
+        look: Look::YAO,
+        says: "yao-jz's photon mapper (its materials' diff/refl/refr, its lights' brightness)",
     },
     Fingerprint {
         dialects: &[Dialect::Cav],

@@ -22,7 +22,6 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::checker::Checker;
 use crate::color::Color;
 use crate::limits::{MAX_SCENE_BYTES, read_within};
 use crate::scene::MissingAssets;
@@ -30,6 +29,7 @@ use crate::scene::ast::{Block, Item};
 use crate::scene::build::material::PathRef;
 use crate::scene::build::{Context, Cursor, paths};
 use crate::scene::error::{Location, SceneError};
+use crate::texture::checker::Checker;
 
 /// What a descriptor file describes.
 #[derive(Clone, Debug, PartialEq)]

@@ -21,11 +21,12 @@
 //! small fuzz and `0.293 fuzz` at fuzz 1 (computed numerically).
 
 use crate::bsdf::ConductorFresnel;
+use crate::bsdf::phong::Phong;
 use crate::color::Color;
 use crate::scene::build::Context;
 use crate::scene::build::weights::Fields;
 use crate::scene::error::SceneError;
-use crate::scene::model::{Coat, DiffuseModel, Material, Phong};
+use crate::scene::model::{Coat, DiffuseModel, Material};
 
 /// GGX alpha per unit of RTIOW fuzz (see the module documentation).
 pub const ALPHA_PER_FUZZ: f64 = 0.3;
@@ -109,9 +110,10 @@ pub fn add_lobes(
 #[cfg(test)]
 mod tests {
     use crate::bsdf::ConductorFresnel;
+    use crate::bsdf::phong::Phong;
     use crate::color::Color;
     use crate::scene::build::build_text;
-    use crate::scene::model::{Coat, DiffuseModel, Material, Phong};
+    use crate::scene::model::{Coat, DiffuseModel, Material};
 
     fn scene(materials: &str) -> crate::scene::model::Scene {
         build_text(&format!(

@@ -11,7 +11,7 @@ use crate::scene::build::{Context, Cursor};
 use crate::scene::error::{Location, SceneError};
 use crate::scene::model::{Dialect, Material};
 use crate::spectral::Dispersion;
-use crate::uv_rule::UvRule;
+use crate::texture::uv_rule::UvRule;
 
 /// A path written in the file, with where it was written.
 #[derive(Clone, Debug, PartialEq)]

@@ -16,6 +16,7 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::bsdf::phong::Phong;
 use crate::color::Color;
 use crate::limits::shown_path;
 use crate::scene::build::Context;
@@ -23,7 +24,7 @@ use crate::scene::build::material::PathRef;
 use crate::scene::build::obj::{MaterialLibrary, ObjMaterials};
 use crate::scene::build::textures::{MapName, MaterialImages, SurfaceMapRef};
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{Material, Phong};
+use crate::scene::model::Material;
 
 /// Converts the materials of an OBJ (`obj`, read at `at` in the scene).
 pub fn convert(

@@ -20,7 +20,6 @@ use std::collections::{BTreeSet, HashMap};
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use crate::checker::Checker;
 use crate::limits::shown_path;
 use crate::scene::MissingAssets;
 use crate::scene::build::descriptor::{self, Descriptor};
@@ -30,6 +29,7 @@ use crate::scene::build::{Context, paths};
 use crate::scene::error::SceneError;
 use crate::scene::model::{Bump, Material, Object};
 use crate::texture::Texture;
+use crate::texture::checker::Checker;
 
 /// Which kind of key named a surface-map image.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

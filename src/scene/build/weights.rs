@@ -8,7 +8,7 @@ use crate::scene::build::material::{MaterialSpec, PathRef};
 use crate::scene::build::textures::SurfaceMapRef;
 use crate::scene::error::{Location, SceneError};
 use crate::scene::model::{Dialect, Material};
-use crate::uv_rule::UvRule;
+use crate::texture::uv_rule::UvRule;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Kind {

@@ -2,12 +2,13 @@
 //! of the original's lobes, the lobes some dialects add, its images and
 //! how they are read).
 
+use crate::bsdf::phong::Phong;
 use crate::bsdf::{AngularWeights, ConductorFresnel, MIN_ROUGHNESS};
-use crate::checker::Checker;
 use crate::color::Color;
 use crate::medium::Medium;
 use crate::spectral::Dispersion;
-use crate::uv_rule::UvRule;
+use crate::texture::checker::Checker;
+use crate::texture::uv_rule::UvRule;
 
 /// One normalised material: the weights of the original's three lobes
 /// (`diffuse + specular + refract`, normally 1), what each of them is, and
@@ -134,14 +135,6 @@ pub enum DiffuseModel {
     /// Schlick Fresnel term from the scalar `f0`, and the Schlick-Smith
     /// shadowing with `k = (alpha + 1)^2 / 8`, times the colour.
     CookTorrance { alpha: f64, f0: f64 },
-}
-
-/// A Phong lobe, energy-normalised: `color (n + 2) / (2 pi) cos^n(alpha)`,
-/// alpha the angle between the reflected direction and the light.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Phong {
-    pub color: Color,
-    pub exponent: f64,
 }
 
 /// A conductor lobe added on top of the weights, with its own colour: a

@@ -14,7 +14,7 @@ use crate::texture::Texture;
 
 mod material;
 
-pub use material::{Bump, Coat, DiffuseModel, Material, Phong};
+pub use material::{Bump, Coat, DiffuseModel, Material};
 
 /// A fully built scene.
 #[derive(Clone, Debug)]

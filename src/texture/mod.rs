@@ -1,6 +1,11 @@
-//! Images used as colour textures and normal maps, with nearest-texel lookup
-//! (clamped, wrapped, tiled, or afb's rows-down wrap), and the placeholder
-//! of a missing texture.
+//! Where a surface's colour comes from: images used as colour textures and
+//! normal maps (here: nearest-texel lookup, clamped, wrapped, tiled, or
+//! afb's rows-down wrap, and the placeholder of a missing texture), rub's
+//! procedural checker (`checker`), and afb's rules that read an image at
+//! the world hit point (`uv_rule`).
+
+pub mod checker;
+pub mod uv_rule;
 
 use crate::color::Color;
 

@@ -1,0 +1,483 @@
+//! yao-jz's progressive photon mapping, the estimator of the `yao` look
+//! (`../shared/docs/looks.md`, "yao-jz+Computer-Graphics-THU"): not a
+//! physical estimator, but that renderer's own sums, round after round:
+//!
+//! 1. a camera pass: `SAMPLES_PER_ROUND` rays per pixel, each jittered
+//!    within half a pixel of the pixel's corner, that follow *every*
+//!    weighted branch of a material at once (mirror, glass of index 1.5
+//!    whatever the material says, diffuse), each with its weight, for at
+//!    most `MAX_DEPTH + 1` hits. An emitter seen adds its emission times
+//!    the branch's energy; a miss adds nothing (the background is black);
+//!    a diffuse branch leaves a view point (its outward normal, the
+//!    surface colour, the branch's energy times the diffuse weight);
+//! 2. a photon pass from the point lights only (directional lights send
+//!    none, emitting materials none), the photons shared equally, each
+//!    leaving in a uniform direction with energy `brightness / photons`
+//!    and the light's colour, and again following every branch. At each
+//!    diffuse hit the view points within the round's radius `r` whose
+//!    normal faces the photon take `photon colour x view colour x
+//!    ((r - d) / r)^2 x energy x view energy / (diffuse hits before + 1)`;
+//!    the photon then leaves along `normalize(n * u) sin(phi) + n
+//!    cos(phi)` (`n * u` per component, `u` uniform on the sphere, `phi`
+//!    the arc cosine of a uniform number), times the surface colour;
+//! 3. each pixel adds the round's sum divided by the camera rays it has had
+//!    in all rounds so far; then the radius shrinks by `RADIUS_DECAY` and
+//!    the camera's energy (`1 / ln(rounds)` at first) grows by its inverse.
+//!
+//! Deterministic for any thread count: camera ray `s` of pixel `p` in
+//! round `k` draws from (`p`, `k` x 8 + `s`, seed), photon `i` of round `k`
+//! from (`k`, `i`, seed), and the photons' sums are fixed point.
+
+use std::f64::consts::PI;
+use std::time::Instant;
+
+use rayon::prelude::*;
+
+use crate::color::Color;
+use crate::image_io::Image;
+use crate::integrator::sppm::PhotonSettings;
+use crate::integrator::sppm::grid::{GridPoint, PointGrid};
+use crate::integrator::sppm::pixel::Gathered;
+use crate::interrupt;
+use crate::math::{Point3, Ray, Vec3};
+use crate::progress::Progress;
+use crate::render::{RenderSettings, RenderStats, Stopped};
+use crate::render_scene::RenderScene;
+use crate::sampler::Sampler;
+use crate::scene::model::Light;
+use crate::shading::{RenderMaterial, Shading};
+
+/// Camera rays per pixel in each round.
+pub const SAMPLES_PER_ROUND: u32 = 8;
+/// Camera paths and photons end after a hit at this depth (the first hit
+/// is at depth 0).
+pub const MAX_DEPTH: u32 = 5;
+/// The radius's factor after each round (the camera's energy's divisor).
+pub const RADIUS_DECAY: f64 = 0.95;
+/// The index of refraction of every glass.
+pub const GLASS_INDEX: f64 = 1.5;
+/// The fewest rounds: the camera's first energy is `1 / ln(rounds)`.
+pub const MIN_ROUNDS: u32 = 2;
+/// A camera branch below this energy ends.
+const MIN_CAMERA_ENERGY: f64 = 1e-9;
+/// Weights at or below this are not followed.
+const MIN_WEIGHT: f64 = 1e-6;
+/// A photon's diffuse weight must be above this to be gathered.
+const MIN_PHOTON_DIFFUSE: f64 = 1e-5;
+/// A view point takes a photon when its normal and the photon's direction
+/// have a dot product below minus this.
+const FACING: f64 = 1e-4;
+/// Photons one task traces.
+const PHOTONS_PER_TASK: u64 = 1024;
+/// Salt of the photons' seeds.
+const PHOTON_SALT: u64 = 0x5A0_1A2D_9E37_11C5;
+
+/// Where a camera branch met a diffuse surface.
+#[derive(Clone, Copy, Debug)]
+struct ViewPoint {
+    point: Point3,
+    /// The surface's outward normal there.
+    normal: Vec3,
+    color: Color,
+    /// The branch's energy times the diffuse weight.
+    energy: f64,
+    pixel: u32,
+}
+
+/// A material's weights as yao's PPM follows them, all at once.
+struct Branches {
+    diffuse: f64,
+    mirror: f64,
+    glass: f64,
+}
+
+fn branches(material: &RenderMaterial) -> Branches {
+    let (mirror, glass, _) = material.lobes.mirror_and_glass();
+    let diffuse = material
+        .lobes
+        .weighted()
+        .filter(|(lobe, _)| !lobe.is_delta())
+        .map(|(_, weight)| weight)
+        .sum();
+    Branches {
+        diffuse,
+        mirror,
+        glass,
+    }
+}
+
+fn reflected(d: &Vec3, n: &Vec3) -> Vec3 {
+    d - n * (2.0 * d.dot(n))
+}
+
+/// The direction through yao's glass of index [`GLASS_INDEX`]; total
+/// internal reflection reflects.
+fn through_glass(at: &Shading, d: &Vec3) -> Vec3 {
+    let n = at.normal;
+    let eta = if at.entering {
+        1.0 / GLASS_INDEX
+    } else {
+        GLASS_INDEX
+    };
+    let cos_i = -d.dot(&n);
+    let cos2t = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+    if cos2t < 0.0 {
+        return reflected(d, &n);
+    }
+    (d * eta + n * (eta * cos_i - cos2t.sqrt())).normalize()
+}
+
+fn outward(at: &Shading) -> Vec3 {
+    if at.entering { at.normal } else { -at.normal }
+}
+
+fn leaving(at: &Shading, direction: Vec3, time: f64) -> Ray {
+    Ray::new(at.spawn_origin(&direction), direction, time)
+}
+
+fn uniform_sphere(u: [f64; 2]) -> Vec3 {
+    let z = 1.0 - 2.0 * u[0];
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    let phi = 2.0 * PI * u[1];
+    Vec3::new(r * phi.cos(), r * phi.sin(), z)
+}
+
+/// One camera branch: adds what it sees to `seen` and its view points to
+/// `points`.
+fn camera_branch(
+    scene: &RenderScene,
+    ray: &Ray,
+    energy: f64,
+    depth: u32,
+    pixel: u32,
+    seen: &mut Color,
+    points: &mut Vec<ViewPoint>,
+) {
+    if energy < MIN_CAMERA_ENERGY || depth > MAX_DEPTH {
+        return;
+    }
+    // A miss adds the background, which yao's PPM sets to black.
+    let Some(hit) = scene.intersect(ray) else {
+        return;
+    };
+    let at = scene.shade(&hit, ray);
+    if at.material.emission.r != 0.0 {
+        *seen += at.material.emission * energy;
+        return;
+    }
+    let weights = branches(at.material);
+    let d = ray.direction;
+    if weights.glass > MIN_WEIGHT {
+        let next = leaving(&at, through_glass(&at, &d), ray.time);
+        camera_branch(
+            scene,
+            &next,
+            energy * weights.glass,
+            depth + 1,
+            pixel,
+            seen,
+            points,
+        );
+    }
+    if weights.mirror > MIN_WEIGHT {
+        let next = leaving(&at, reflected(&d, &at.normal), ray.time);
+        camera_branch(
+            scene,
+            &next,
+            energy * weights.mirror,
+            depth + 1,
+            pixel,
+            seen,
+            points,
+        );
+    }
+    if weights.diffuse > MIN_WEIGHT {
+        points.push(ViewPoint {
+            point: at.point,
+            normal: outward(&at),
+            color: at.color,
+            energy: energy * weights.diffuse,
+            pixel,
+        });
+    }
+}
+
+/// What every photon of a round shares.
+struct PhotonPass<'a> {
+    scene: &'a RenderScene,
+    grid: &'a PointGrid,
+    points: &'a [ViewPoint],
+    radius: f64,
+    gathered: &'a Gathered,
+}
+
+impl PhotonPass<'_> {
+    fn trace(
+        &self,
+        ray: &Ray,
+        color: Color,
+        depth: u32,
+        energy: f64,
+        diffuse_hits: u32,
+        sampler: &mut Sampler,
+    ) {
+        if depth > MAX_DEPTH {
+            return;
+        }
+        let Some(hit) = self.scene.intersect(ray) else {
+            return;
+        };
+        let at = self.scene.shade(&hit, ray);
+        let weights = branches(at.material);
+        let d = ray.direction;
+        if weights.mirror > MIN_WEIGHT {
+            let next = leaving(&at, reflected(&d, &at.normal), ray.time);
+            let energy = energy * weights.mirror;
+            self.trace(&next, color, depth + 1, energy, diffuse_hits, sampler);
+        }
+        if weights.glass > MIN_WEIGHT {
+            let next = leaving(&at, through_glass(&at, &d), ray.time);
+            let energy = energy * weights.glass;
+            self.trace(&next, color, depth + 1, energy, diffuse_hits, sampler);
+        }
+        if weights.diffuse <= MIN_PHOTON_DIFFUSE {
+            return;
+        }
+        let r = self.radius;
+        let share = energy / (diffuse_hits + 1) as f64;
+        self.grid.candidates(&at.point, |index| {
+            let view = &self.points[index as usize];
+            let distance = (view.point - at.point).norm();
+            if distance > r || view.normal.dot(&d) >= -FACING {
+                return;
+            }
+            let cone = ((r - distance) / r).powi(2);
+            let value = color * view.color * (cone * share * view.energy);
+            if value.is_finite() {
+                self.gathered.add(view.pixel as usize, value);
+            }
+        });
+        let n = outward(&at);
+        let spread = n.component_mul(&uniform_sphere(sampler.next_2d()));
+        let phi = sampler.next_f64().acos();
+        let Some(spread) = spread.try_normalize(1e-12) else {
+            return;
+        };
+        let Some(direction) = (spread * phi.sin() + n * phi.cos()).try_normalize(1e-12) else {
+            return;
+        };
+        let next = leaving(&at, direction, ray.time);
+        let color = color * at.color;
+        let energy = energy * weights.diffuse;
+        self.trace(&next, color, depth + 1, energy, diffuse_hits + 1, sampler);
+    }
+}
+
+/// Renders `scene` by yao-jz's PPM: `settings.spp` camera rays per pixel
+/// in rounds of [`SAMPLES_PER_ROUND`] (at least [`MIN_ROUNDS`]), the
+/// photons per round, the first radius and the brightness from the look
+/// (`photon_settings` overrides the first two). With `stop_on_signal`,
+/// SIGINT or SIGTERM ends it after the round in flight.
+pub fn render(
+    scene: &RenderScene,
+    settings: &RenderSettings,
+    photon_settings: PhotonSettings,
+    stop_on_signal: bool,
+) -> Result<(Image, RenderStats), String> {
+    let start = Instant::now();
+    let look = scene
+        .look()
+        .photons
+        .ok_or("yao's PPM needs a photon-mapping look")?;
+    let photon_settings = photon_settings.with_look(scene.look());
+    photon_settings.check()?;
+    let (width, height) = (
+        settings.width.max(1) as usize,
+        settings.height.max(1) as usize,
+    );
+    let count = width * height;
+    let photons = photon_settings.photons(count as u64);
+    let mut radius = photon_settings
+        .initial_radius
+        .unwrap_or(look.initial_radius);
+    let rounds = settings.spp.div_ceil(SAMPLES_PER_ROUND).max(MIN_ROUNDS);
+    let mut camera_energy = 1.0 / (rounds as f64).ln();
+    let photon_energy = look.power / photons as f64;
+    let lights: Vec<(Point3, Color)> = scene
+        .lights()
+        .iter()
+        .filter_map(|light| match light {
+            Light::Point { position, color } => Some((*position, *color)),
+            _ => None,
+        })
+        .collect();
+    let per_light = if lights.is_empty() {
+        0
+    } else {
+        photons / lights.len() as u64
+    };
+    let traced = per_light * lights.len() as u64;
+    let gathered = Gathered::try_new(count)?;
+    let mut board = vec![Color::BLACK; count];
+    let mut builder = rayon::ThreadPoolBuilder::new();
+    if let Some(threads) = settings.threads {
+        builder = builder.num_threads(threads.max(1));
+    }
+    let pool = builder
+        .build()
+        .map_err(|e| format!("cannot start worker threads: {e}"))?;
+    let camera_rays = count as u64 * SAMPLES_PER_ROUND as u64;
+    let progress = Progress::new(rounds as u64 * (camera_rays + traced), None);
+    let mut grid = PointGrid::default();
+    let mut stopped = None;
+    let mut done = 0;
+    let finished = std::sync::atomic::AtomicBool::new(false);
+    std::thread::scope(|scope| -> Result<(), String> {
+        let reporter = settings.progress.then(|| {
+            scope.spawn(|| {
+                use std::io::IsTerminal;
+                let every = settings
+                    .progress_every
+                    .unwrap_or(crate::progress::PROGRESS_LOG_SECONDS);
+                progress.report(std::io::stderr().is_terminal(), every, &finished)
+            })
+        });
+        for round in 0..rounds {
+            if stop_on_signal && let Some(signal) = interrupt::interrupted() {
+                stopped = Some(Stopped::Signal(signal));
+                break;
+            }
+            // 1. Camera pass, row by row from the top.
+            let rows: Vec<(Vec<Color>, Vec<ViewPoint>)> = pool.install(|| {
+                (0..height)
+                    .into_par_iter()
+                    .map(|row| {
+                        let y = height - 1 - row;
+                        let mut seen = vec![Color::BLACK; width];
+                        let mut points = Vec::new();
+                        for (x, seen) in seen.iter_mut().enumerate() {
+                            let pixel = (row * width + x) as u32;
+                            for s in 0..SAMPLES_PER_ROUND {
+                                let sample = (round * SAMPLES_PER_ROUND + s) as u64;
+                                let mut sampler = Sampler::new(
+                                    settings.sampler,
+                                    pixel as u64,
+                                    sample,
+                                    settings.seed,
+                                );
+                                let [u, v] = sampler.next_2d();
+                                let lens = if scene.plan().lens {
+                                    sampler.next_2d()
+                                } else {
+                                    [0.5, 0.5]
+                                };
+                                let time = if scene.plan().time {
+                                    sampler.next_f64()
+                                } else {
+                                    0.0
+                                };
+                                let ray = scene.camera().ray(
+                                    x as f64 + u - 0.5,
+                                    y as f64 + v - 0.5,
+                                    lens,
+                                    time,
+                                );
+                                camera_branch(
+                                    scene,
+                                    &ray,
+                                    camera_energy,
+                                    0,
+                                    pixel,
+                                    seen,
+                                    &mut points,
+                                );
+                            }
+                        }
+                        progress.add(width as u64 * SAMPLES_PER_ROUND as u64);
+                        (seen, points)
+                    })
+                    .collect()
+            });
+            let mut seen = Vec::with_capacity(count);
+            let mut points = Vec::new();
+            for (row_seen, row_points) in rows {
+                seen.extend(row_seen);
+                points.extend(row_points);
+            }
+            if points.len() > u32::MAX as usize {
+                return Err(format!(
+                    "{} view points: too many for one round",
+                    points.len()
+                ));
+            }
+            // 2. The grid of view points, all of the round's radius.
+            let grid_points: Vec<GridPoint> = points
+                .iter()
+                .enumerate()
+                .map(|(index, view)| GridPoint {
+                    index: index as u32,
+                    point: view.point,
+                    radius,
+                })
+                .collect();
+            grid.rebuild(&grid_points);
+            // 3. Photon pass.
+            let pass = PhotonPass {
+                scene,
+                grid: &grid,
+                points: &points,
+                radius,
+                gathered: &gathered,
+            };
+            let tasks = traced.div_ceil(PHOTONS_PER_TASK);
+            pool.install(|| {
+                (0..tasks).into_par_iter().for_each(|task| {
+                    let first = task * PHOTONS_PER_TASK;
+                    let end = (first + PHOTONS_PER_TASK).min(traced);
+                    for i in first..end {
+                        let (position, color) = lights[(i / per_light) as usize];
+                        let mut sampler = Sampler::new(
+                            settings.sampler,
+                            round as u64,
+                            i,
+                            settings.seed ^ PHOTON_SALT,
+                        );
+                        let direction = uniform_sphere(sampler.next_2d());
+                        let ray = Ray::new(position, direction, 0.0);
+                        pass.trace(&ray, color, 0, photon_energy, 0, &mut sampler);
+                    }
+                    progress.add(end - first);
+                });
+            });
+            // 4. Each pixel adds the round over its camera rays so far.
+            let rays_so_far = ((round + 1) * SAMPLES_PER_ROUND) as f64;
+            for (index, value) in board.iter_mut().enumerate() {
+                let (_, photons) = gathered.take(index);
+                *value += (seen[index] + photons) / rays_so_far;
+            }
+            radius *= RADIUS_DECAY;
+            camera_energy /= RADIUS_DECAY;
+            done += 1;
+        }
+        finished.store(true, std::sync::atomic::Ordering::Relaxed);
+        if let Some(reporter) = reporter {
+            reporter.thread().unpark();
+        }
+        Ok(())
+    })?;
+    let stats = RenderStats {
+        seconds: start.elapsed().as_secs_f64(),
+        samples: done as u64 * camera_rays,
+        dropped: 0,
+        fireflies: 0,
+        stopped,
+    };
+    Ok((
+        Image {
+            width,
+            height,
+            pixels: board,
+        },
+        stats,
+    ))
+}
