@@ -28,7 +28,8 @@
 //! round `k` draws from (`p`, `k` x 8 + `s`, seed), photon `i` of round `k`
 //! from (`k`, `i`, seed), and the photons' sums are fixed point.
 
-use std::f64::consts::PI;
+mod trace;
+
 use std::time::Instant;
 
 use rayon::prelude::*;
@@ -39,13 +40,13 @@ use crate::integrator::sppm::PhotonSettings;
 use crate::integrator::sppm::grid::{GridPoint, PointGrid};
 use crate::integrator::sppm::pixel::Gathered;
 use crate::interrupt;
-use crate::math::{Point3, Ray, Vec3};
+use crate::math::{Point3, Ray};
 use crate::progress::Progress;
 use crate::render::{RenderSettings, RenderStats, Stopped};
 use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
 use crate::scene::model::Light;
-use crate::shading::{RenderMaterial, Shading};
+use trace::{PhotonPass, ViewPoint, camera_branch, uniform_sphere};
 
 /// Camera rays per pixel in each round.
 pub const SAMPLES_PER_ROUND: u32 = 8;
@@ -58,220 +59,10 @@ pub const RADIUS_DECAY: f64 = 0.95;
 pub const GLASS_INDEX: f64 = 1.5;
 /// The fewest rounds: the camera's first energy is `1 / ln(rounds)`.
 pub const MIN_ROUNDS: u32 = 2;
-/// A camera branch below this energy ends.
-const MIN_CAMERA_ENERGY: f64 = 1e-9;
-/// Weights at or below this are not followed.
-const MIN_WEIGHT: f64 = 1e-6;
-/// A photon's diffuse weight must be above this to be gathered.
-const MIN_PHOTON_DIFFUSE: f64 = 1e-5;
-/// A view point takes a photon when its normal and the photon's direction
-/// have a dot product below minus this.
-const FACING: f64 = 1e-4;
 /// Photons one task traces.
 const PHOTONS_PER_TASK: u64 = 1024;
 /// Salt of the photons' seeds.
 const PHOTON_SALT: u64 = 0x5A0_1A2D_9E37_11C5;
-
-/// Where a camera branch met a diffuse surface.
-#[derive(Clone, Copy, Debug)]
-struct ViewPoint {
-    point: Point3,
-    /// The surface's outward normal there.
-    normal: Vec3,
-    color: Color,
-    /// The branch's energy times the diffuse weight.
-    energy: f64,
-    pixel: u32,
-}
-
-/// A material's weights as yao's PPM follows them, all at once.
-struct Branches {
-    diffuse: f64,
-    mirror: f64,
-    glass: f64,
-}
-
-fn branches(material: &RenderMaterial) -> Branches {
-    let (mirror, glass, _) = material.lobes.mirror_and_glass();
-    let diffuse = material
-        .lobes
-        .weighted()
-        .filter(|(lobe, _)| !lobe.is_delta())
-        .map(|(_, weight)| weight)
-        .sum();
-    Branches {
-        diffuse,
-        mirror,
-        glass,
-    }
-}
-
-fn reflected(d: &Vec3, n: &Vec3) -> Vec3 {
-    d - n * (2.0 * d.dot(n))
-}
-
-/// The direction through yao's glass of index [`GLASS_INDEX`]; total
-/// internal reflection reflects.
-fn through_glass(at: &Shading, d: &Vec3) -> Vec3 {
-    let n = at.normal;
-    let eta = if at.entering {
-        1.0 / GLASS_INDEX
-    } else {
-        GLASS_INDEX
-    };
-    let cos_i = -d.dot(&n);
-    let cos2t = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
-    if cos2t < 0.0 {
-        return reflected(d, &n);
-    }
-    (d * eta + n * (eta * cos_i - cos2t.sqrt())).normalize()
-}
-
-fn outward(at: &Shading) -> Vec3 {
-    if at.entering { at.normal } else { -at.normal }
-}
-
-fn leaving(at: &Shading, direction: Vec3, time: f64) -> Ray {
-    Ray::new(at.spawn_origin(&direction), direction, time)
-}
-
-fn uniform_sphere(u: [f64; 2]) -> Vec3 {
-    let z = 1.0 - 2.0 * u[0];
-    let r = (1.0 - z * z).max(0.0).sqrt();
-    let phi = 2.0 * PI * u[1];
-    Vec3::new(r * phi.cos(), r * phi.sin(), z)
-}
-
-/// One camera branch: adds what it sees to `seen` and its view points to
-/// `points`.
-fn camera_branch(
-    scene: &RenderScene,
-    ray: &Ray,
-    energy: f64,
-    depth: u32,
-    pixel: u32,
-    seen: &mut Color,
-    points: &mut Vec<ViewPoint>,
-) {
-    if energy < MIN_CAMERA_ENERGY || depth > MAX_DEPTH {
-        return;
-    }
-    // A miss adds the background, which yao's PPM sets to black.
-    let Some(hit) = scene.intersect(ray) else {
-        return;
-    };
-    let at = scene.shade(&hit, ray);
-    if at.material.emission.r != 0.0 {
-        *seen += at.material.emission * energy;
-        return;
-    }
-    let weights = branches(at.material);
-    let d = ray.direction;
-    if weights.glass > MIN_WEIGHT {
-        let next = leaving(&at, through_glass(&at, &d), ray.time);
-        camera_branch(
-            scene,
-            &next,
-            energy * weights.glass,
-            depth + 1,
-            pixel,
-            seen,
-            points,
-        );
-    }
-    if weights.mirror > MIN_WEIGHT {
-        let next = leaving(&at, reflected(&d, &at.normal), ray.time);
-        camera_branch(
-            scene,
-            &next,
-            energy * weights.mirror,
-            depth + 1,
-            pixel,
-            seen,
-            points,
-        );
-    }
-    if weights.diffuse > MIN_WEIGHT {
-        points.push(ViewPoint {
-            point: at.point,
-            normal: outward(&at),
-            color: at.color,
-            energy: energy * weights.diffuse,
-            pixel,
-        });
-    }
-}
-
-/// What every photon of a round shares.
-struct PhotonPass<'a> {
-    scene: &'a RenderScene,
-    grid: &'a PointGrid,
-    points: &'a [ViewPoint],
-    radius: f64,
-    gathered: &'a Gathered,
-}
-
-impl PhotonPass<'_> {
-    fn trace(
-        &self,
-        ray: &Ray,
-        color: Color,
-        depth: u32,
-        energy: f64,
-        diffuse_hits: u32,
-        sampler: &mut Sampler,
-    ) {
-        if depth > MAX_DEPTH {
-            return;
-        }
-        let Some(hit) = self.scene.intersect(ray) else {
-            return;
-        };
-        let at = self.scene.shade(&hit, ray);
-        let weights = branches(at.material);
-        let d = ray.direction;
-        if weights.mirror > MIN_WEIGHT {
-            let next = leaving(&at, reflected(&d, &at.normal), ray.time);
-            let energy = energy * weights.mirror;
-            self.trace(&next, color, depth + 1, energy, diffuse_hits, sampler);
-        }
-        if weights.glass > MIN_WEIGHT {
-            let next = leaving(&at, through_glass(&at, &d), ray.time);
-            let energy = energy * weights.glass;
-            self.trace(&next, color, depth + 1, energy, diffuse_hits, sampler);
-        }
-        if weights.diffuse <= MIN_PHOTON_DIFFUSE {
-            return;
-        }
-        let r = self.radius;
-        let share = energy / (diffuse_hits + 1) as f64;
-        self.grid.candidates(&at.point, |index| {
-            let view = &self.points[index as usize];
-            let distance = (view.point - at.point).norm();
-            if distance > r || view.normal.dot(&d) >= -FACING {
-                return;
-            }
-            let cone = ((r - distance) / r).powi(2);
-            let value = color * view.color * (cone * share * view.energy);
-            if value.is_finite() {
-                self.gathered.add(view.pixel as usize, value);
-            }
-        });
-        let n = outward(&at);
-        let spread = n.component_mul(&uniform_sphere(sampler.next_2d()));
-        let phi = sampler.next_f64().acos();
-        let Some(spread) = spread.try_normalize(1e-12) else {
-            return;
-        };
-        let Some(direction) = (spread * phi.sin() + n * phi.cos()).try_normalize(1e-12) else {
-            return;
-        };
-        let next = leaving(&at, direction, ray.time);
-        let color = color * at.color;
-        let energy = energy * weights.diffuse;
-        self.trace(&next, color, depth + 1, energy, diffuse_hits + 1, sampler);
-    }
-}
 
 /// Renders `scene` by yao-jz's PPM: `settings.spp` camera rays per pixel
 /// in rounds of [`SAMPLES_PER_ROUND`] (at least [`MIN_ROUNDS`]), the
