@@ -189,3 +189,45 @@ fn jef_turns_surfaces_of_revolution_about_z() {
     };
     assert!(middle(about_y) > 0.4, "{}", middle(about_y));
 }
+
+#[test]
+fn emj_hits_a_transformed_sphere_at_its_distance_used_as_parameter() {
+    // A unit sphere scaled by 2, seen from z = 10 under a light along -x
+    // (lighting the +x side). In object space the ray's direction has
+    // length 1/2: emily-jia's sphere finds the hit's distance along it and
+    // uses that as the parameter, so the point lies halfway between the
+    // eye and the sphere, where the normal (from the centre) points more
+    // towards the eye than at the true hit: a pixel right of the middle is
+    // darker than the exact hit's. One hit only (no mirror ray).
+    let text = |object: &str| {
+        format!(
+            "PerspectiveCamera {{ center 0 0 10 direction 0 0 -1 up 0 1 0 angle 30 width 9 height 9 }}\n\
+             Lights {{ numLights 1 DirectionalLight {{ direction -1 0 0 color 1 1 1 }} }}\n\
+             Background {{ color 0 0 0 }}\n\
+             Materials {{ numMaterials 1 Material {{ diffuseColor 0.5 0.5 0.5 }} }}\n\
+             Group {{ numObjects 1 MaterialIndex 0 {object} }}"
+        )
+    };
+    let scaled = "Transform { Scale 2 2 2 Sphere { center 0 0 0 radius 1 } }";
+    let plain = "Sphere { center 0 0 0 radius 2 }";
+    let right = |object: &str, look: Look| {
+        let look = Look {
+            max_depth: 1,
+            ..look
+        };
+        let image = render_text("scaled-sphere", &text(object), look);
+        image.pixels[4 * 9 + 6].g
+    };
+    let exact = Look {
+        sphere_test: pathtracer::geometry::SphereTest::Robust,
+        ..Look::EMJ
+    };
+    let (theirs, ours) = (right(scaled, Look::EMJ), right(scaled, exact));
+    assert!(ours > 0.15 && theirs < ours - 0.05, "{theirs} {ours}");
+    // Untransformed, distance and parameter agree: the exact hit.
+    let untransformed = right(plain, Look::EMJ);
+    assert!(
+        (untransformed - ours).abs() < 1e-9,
+        "{untransformed} {ours}"
+    );
+}

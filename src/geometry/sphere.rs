@@ -21,6 +21,12 @@ pub enum SphereTest {
     /// (an [`Intersection`]'s `u` is 1 for such a hit), and rays leaving
     /// from the hit point itself.
     Cambrian,
+    /// emily-jia's (`emily-jia/graphic_homework:include/sphere.hpp`): the
+    /// near root from outside, the far one from inside, found as a distance
+    /// along the ray and used as the ray's parameter (they differ under a
+    /// transform that scales the direction), the normal from that point,
+    /// inwards from inside (`u` is 1); rays leave it offset as usual.
+    DistanceAsParameter,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -60,6 +66,9 @@ impl Sphere {
                 0.0,
             ));
         }
+        if self.test == SphereTest::DistanceAsParameter {
+            return self.intersect_by_distance(&center, ray, t_min, t_max);
+        }
         let f = ray.origin - center;
         let d = ray.direction;
         let a = d.norm_squared();
@@ -86,6 +95,40 @@ impl Sphere {
             return None;
         };
         Some(Intersection::new(t, 0.0, 0.0))
+    }
+
+    /// [`SphereTest::DistanceAsParameter`]'s test.
+    fn intersect_by_distance(
+        &self,
+        center: &Point3,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<Intersection> {
+        let length = ray.direction.norm();
+        if length == 0.0 {
+            return None;
+        }
+        let to_center = center - ray.origin;
+        let l_sq = to_center.norm_squared();
+        let r_sq = self.radius * self.radius;
+        let projected = to_center.dot(&ray.direction) / length;
+        let distance_sq = l_sq - projected * projected;
+        if (l_sq > r_sq && projected < 0.0) || distance_sq > r_sq {
+            return None;
+        }
+        let half_chord = (r_sq - distance_sq).sqrt();
+        let t = if l_sq == r_sq {
+            0.0
+        } else if l_sq > r_sq {
+            projected - half_chord
+        } else {
+            projected + half_chord
+        };
+        if t < t_min || t > t_max {
+            return None;
+        }
+        Some(Intersection::new(t, f64::from(u8::from(l_sq < r_sq)), 0.0))
     }
 
     pub fn surface(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
@@ -144,7 +187,7 @@ impl Sphere {
     ) -> (Point3, Vec3) {
         match self.test {
             SphereTest::Robust => (point, normal),
-            SphereTest::Cambrian => {
+            SphereTest::Cambrian | SphereTest::DistanceAsParameter => {
                 let point = ray.at(hit.t);
                 let inside = hit.u != 0.0;
                 (point, if inside { -normal } else { normal })

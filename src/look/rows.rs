@@ -88,6 +88,9 @@ impl Look {
         max_depth: 6,
         point_lights: PointLights::Always,
         pixels: PixelSampling::Corner,
+        // Its sphere uses the hit's distance as the ray's parameter
+        // (`emily-jia/graphic_homework:include/sphere.hpp`).
+        sphere_test: SphereTest::DistanceAsParameter,
         ..Look::PA1
     };
 
