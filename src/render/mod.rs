@@ -8,6 +8,7 @@ pub mod debug_sample;
 pub mod film_file;
 pub mod job;
 pub mod photon_passes;
+pub mod ppm_rounds;
 
 use std::io::IsTerminal;
 use std::ops::Range;

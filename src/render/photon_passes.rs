@@ -289,7 +289,7 @@ pub fn render(
     stop_on_signal: bool,
 ) -> Result<(Image, RenderStats), String> {
     if is_yao(scene) {
-        return crate::integrator::ppm::render(scene, settings, photon_settings, stop_on_signal);
+        return super::ppm_rounds::render(scene, settings, photon_settings, stop_on_signal);
     }
     let start = Instant::now();
     let mut mapper = PhotonMapper::new(scene, settings, photon_settings)?;

@@ -1,6 +1,33 @@
-//! The branches of yao-jz's PPM (see the module above): a camera ray's
-//! branches that leave view points, and a photon's branches that are
-//! gathered by them, every weighted branch of a material followed at once.
+//! yao-jz's progressive photon mapping, the estimator of the `yao` look
+//! (`../shared/docs/looks.md`, "yao-jz+Computer-Graphics-THU"): not a
+//! physical estimator, but that renderer's own sums, round after round:
+//!
+//! 1. a camera pass: `SAMPLES_PER_ROUND` rays per pixel, each jittered
+//!    within half a pixel of the pixel's corner, that follow *every*
+//!    weighted branch of a material at once (mirror, glass of index 1.5
+//!    whatever the material says, diffuse), each with its weight, for at
+//!    most `MAX_DEPTH + 1` hits. An emitter seen adds its emission times
+//!    the branch's energy; a miss adds nothing (the background is black);
+//!    a diffuse branch leaves a view point (its outward normal, the
+//!    surface colour, the branch's energy times the diffuse weight);
+//! 2. a photon pass from the point lights only (directional lights send
+//!    none, emitting materials none), the photons shared equally, each
+//!    leaving in a uniform direction with energy `brightness / photons`
+//!    and the light's colour, and again following every branch. At each
+//!    diffuse hit the view points within the round's radius `r` whose
+//!    normal faces the photon take `photon colour x view colour x
+//!    ((r - d) / r)^2 x energy x view energy / (diffuse hits before + 1)`;
+//!    the photon then leaves along `normalize(n * u) sin(phi) + n
+//!    cos(phi)` (`n * u` per component, `u` uniform on the sphere, `phi`
+//!    the arc cosine of a uniform number), times the surface colour;
+//! 3. each pixel adds the round's sum divided by the camera rays it has had
+//!    in all rounds so far; then the radius shrinks by `RADIUS_DECAY` and
+//!    the camera's energy (`1 / ln(rounds)` at first) grows by its inverse.
+//!
+//! Deterministic for any thread count: camera ray `s` of pixel `p` in
+//! round `k` draws from (`p`, `k` x 8 + `s`, seed), photon `i` of round `k`
+//!
+//! The rounds and their parallel loops are `render::ppm_rounds`.
 
 use std::f64::consts::PI;
 
@@ -12,7 +39,17 @@ use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
 use crate::shading::{RenderMaterial, Shading};
 
-use super::{GLASS_INDEX, MAX_DEPTH};
+/// Camera rays per pixel in each round.
+pub const SAMPLES_PER_ROUND: u32 = 8;
+/// Camera paths and photons end after a hit at this depth (the first hit
+/// is at depth 0).
+pub const MAX_DEPTH: u32 = 5;
+/// The radius's factor after each round (the camera's energy's divisor).
+pub const RADIUS_DECAY: f64 = 0.95;
+/// The index of refraction of every glass.
+pub const GLASS_INDEX: f64 = 1.5;
+/// The fewest rounds: the camera's first energy is `1 / ln(rounds)`.
+pub const MIN_ROUNDS: u32 = 2;
 
 /// A camera branch below this energy ends.
 const MIN_CAMERA_ENERGY: f64 = 1e-9;
