@@ -231,7 +231,7 @@ impl<'a> Renderer<'a> {
         }
         if settings.integrator == Integrator::Sppm {
             return Err(
-                "--integrator sppm renders whole passes (photon_render), not pixel samples: `render` runs it, this command does not"
+                "--integrator sppm renders whole photon passes, not pixel samples: `render` runs it, this command does not"
                     .to_string(),
             );
         }
