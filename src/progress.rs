@@ -9,6 +9,7 @@
 //! rewritten in place on a terminal, otherwise (batch logs) a whole line
 //! every few seconds.
 
+use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::{Duration, Instant};
 
@@ -108,6 +109,28 @@ impl Progress {
                 crate::stderr_line!("{line}");
             }
         }
+    }
+
+    /// Runs `work` on this thread; when `show` is set, a reporter thread
+    /// prints this progress meanwhile (every `every` seconds to a log,
+    /// [`PROGRESS_LOG_SECONDS`] when not given; a live line on a terminal)
+    /// and ends with it.
+    pub fn while_running<T>(&self, show: bool, every: Option<f64>, work: impl FnOnce() -> T) -> T {
+        let finished = AtomicBool::new(false);
+        std::thread::scope(|scope| {
+            let reporter = show.then(|| {
+                scope.spawn(|| {
+                    let every = every.unwrap_or(PROGRESS_LOG_SECONDS);
+                    self.report(std::io::stderr().is_terminal(), every, &finished)
+                })
+            });
+            let result = work();
+            finished.store(true, Ordering::Relaxed);
+            if let Some(reporter) = reporter {
+                reporter.thread().unpark();
+            }
+            result
+        })
     }
 }
 

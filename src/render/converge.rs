@@ -23,6 +23,30 @@ pub struct ConvergencePoint {
     pub ssim: f64,
 }
 
+impl ConvergencePoint {
+    /// The point of `image`, made of `spp` samples per pixel in `seconds`,
+    /// against `reference` (both cut to `region` first when one is given).
+    pub fn measure(
+        image: &Image,
+        reference: &Image,
+        region: Option<[usize; 4]>,
+        spp: u32,
+        seconds: f64,
+    ) -> Result<ConvergencePoint, String> {
+        let comparison = match region {
+            Some(region) => compare(&cut(image, region)?, &cut(reference, region)?)?,
+            None => compare(image, reference)?,
+        };
+        Ok(ConvergencePoint {
+            spp,
+            seconds,
+            rmse: comparison.rmse,
+            rel_mse: comparison.rel_mse,
+            ssim: comparison.ssim,
+        })
+    }
+}
+
 /// Renders 1, 2, 4, ... up to `max_spp` samples per pixel (each stage
 /// continues the previous one) and compares every stage with `reference`;
 /// `max_spp` 0 is an error (no stage, no curve).
@@ -81,18 +105,7 @@ pub fn converge_within(
         let samples = Samples::Range(done..target);
         seconds += renderer.render(&mut film, &samples, Stop::Never)?.seconds;
         done = target;
-        let image = film.to_image();
-        let comparison = match region {
-            Some(region) => compare(&cut(&image, region)?, &cut(reference, region)?)?,
-            None => compare(&image, reference)?,
-        };
-        let point = ConvergencePoint {
-            spp: done,
-            seconds,
-            rmse: comparison.rmse,
-            rel_mse: comparison.rel_mse,
-            ssim: comparison.ssim,
-        };
+        let point = ConvergencePoint::measure(&film.to_image(), reference, region, done, seconds)?;
         on_point(&point);
         points.push(point);
         next = next.saturating_mul(2);

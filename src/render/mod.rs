@@ -10,7 +10,6 @@ pub mod job;
 pub mod photon_passes;
 pub mod ppm_rounds;
 
-use std::io::IsTerminal;
 use std::ops::Range;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
@@ -235,13 +234,7 @@ impl<'a> Renderer<'a> {
                     .to_string(),
             );
         }
-        let mut builder = rayon::ThreadPoolBuilder::new();
-        if let Some(threads) = settings.threads {
-            builder = builder.num_threads(threads.max(1));
-        }
-        let pool = builder
-            .build()
-            .map_err(|e| format!("cannot start worker threads: {e}"))?;
+        let pool = worker_pool(settings.threads)?;
         Ok(Renderer {
             settings,
             scene,
@@ -296,62 +289,51 @@ impl<'a> Renderer<'a> {
                 || stop_before_sample()
                 || deadline.is_some_and(|d| Instant::now() >= d)
         };
-        let finished = AtomicBool::new(false);
-        std::thread::scope(|scope| {
-            let reporter = settings.progress.then(|| {
-                scope.spawn(|| {
-                    let every = settings.progress_every.unwrap_or(PROGRESS_LOG_SECONDS);
-                    let terminal = std::io::stderr().is_terminal();
-                    self.progress.report(terminal, every, &finished)
-                })
-            });
-            self.pool.install(|| {
-                film.pixels
-                    .par_chunks_mut(width)
-                    .enumerate()
-                    .for_each(|(row, pixels)| {
-                        let y = height - 1 - row;
-                        let mut light_paths = 0u64;
-                        let mut traced = 0u64;
-                        'pixels: for (x, pixel) in pixels.iter_mut().enumerate() {
-                            if pixel.converged {
-                                continue;
-                            }
-                            if stop_before_pixel() {
-                                stopping.store(true, Ordering::Relaxed);
-                                break;
-                            }
-                            let pixel_index = (row * width + x) as u64;
-                            for sample in samples.of(pixel) {
-                                if stop_before_sample() {
+        self.progress
+            .while_running(settings.progress, settings.progress_every, || {
+                self.pool.install(|| {
+                    film.pixels
+                        .par_chunks_mut(width)
+                        .enumerate()
+                        .for_each(|(row, pixels)| {
+                            let y = height - 1 - row;
+                            let mut light_paths = 0u64;
+                            let mut traced = 0u64;
+                            'pixels: for (x, pixel) in pixels.iter_mut().enumerate() {
+                                if pixel.converged {
+                                    continue;
+                                }
+                                if stop_before_pixel() {
                                     stopping.store(true, Ordering::Relaxed);
-                                    break 'pixels;
+                                    break;
                                 }
-                                let at = PixelSample {
-                                    x,
-                                    y,
-                                    pixel_index,
-                                    sample,
-                                };
-                                let mut splats = Splats::default();
-                                let value = self.trace_sample(at, &mut splats, &mut Silent);
-                                pixel.add(value, settings.clamp);
-                                for &(sx, sy, splat) in splats.iter() {
-                                    splat_sums.add((height - 1 - sy) * width + sx, splat);
+                                let pixel_index = (row * width + x) as u64;
+                                for sample in samples.of(pixel) {
+                                    if stop_before_sample() {
+                                        stopping.store(true, Ordering::Relaxed);
+                                        break 'pixels;
+                                    }
+                                    let at = PixelSample {
+                                        x,
+                                        y,
+                                        pixel_index,
+                                        sample,
+                                    };
+                                    let mut splats = Splats::default();
+                                    let value = self.trace_sample(at, &mut splats, &mut Silent);
+                                    pixel.add(value, settings.clamp);
+                                    for &(sx, sy, splat) in splats.iter() {
+                                        splat_sums.add((height - 1 - sy) * width + sx, splat);
+                                    }
+                                    light_paths += splats.light_paths as u64;
+                                    traced += 1;
                                 }
-                                light_paths += splats.light_paths as u64;
-                                traced += 1;
                             }
-                        }
-                        splat_sums.add_light_paths(light_paths);
-                        self.progress.add(traced);
-                    });
+                            splat_sums.add_light_paths(light_paths);
+                            self.progress.add(traced);
+                        });
+                });
             });
-            finished.store(true, Ordering::Relaxed);
-            if let Some(reporter) = reporter {
-                reporter.thread().unpark();
-            }
-        });
         splat_sums.add_to(film);
         let stopped = stopping
             .load(Ordering::Relaxed)
@@ -404,4 +386,16 @@ pub(crate) struct PixelSample {
     /// Row from the top times the width, plus `x` (what seeds the sampler).
     pub pixel_index: u64,
     pub sample: u32,
+}
+
+/// The worker threads of a render: `threads` of them (at least one), or
+/// rayon's default (one per core) when not given.
+pub fn worker_pool(threads: Option<usize>) -> Result<rayon::ThreadPool, String> {
+    let mut builder = rayon::ThreadPoolBuilder::new();
+    if let Some(threads) = threads {
+        builder = builder.num_threads(threads.max(1));
+    }
+    builder
+        .build()
+        .map_err(|e| format!("cannot start worker threads: {e}"))
 }

@@ -12,9 +12,8 @@ use crate::image_io::Image;
 use crate::interrupt;
 use crate::look::PhotonMethod;
 use crate::math::Aabb;
-use crate::metrics::compare;
 use crate::progress::Progress;
-use crate::render::converge::{ConvergencePoint, cut};
+use crate::render::converge::ConvergencePoint;
 use crate::render::{RenderSettings, RenderStats, Stopped};
 use crate::render_scene::RenderScene;
 use crate::rng::mix64;
@@ -79,13 +78,7 @@ impl<'a> PhotonMapper<'a> {
             count,
             PixelState::new(photon_settings.initial_radius.unwrap_or(0.0)),
         );
-        let mut builder = rayon::ThreadPoolBuilder::new();
-        if let Some(threads) = settings.threads {
-            builder = builder.num_threads(threads.max(1));
-        }
-        let pool = builder
-            .build()
-            .map_err(|e| format!("cannot start worker threads: {e}"))?;
+        let pool = super::worker_pool(settings.threads)?;
         Ok(PhotonMapper {
             scene,
             settings,
@@ -296,27 +289,13 @@ pub fn render(
     let passes = settings.spp.max(1);
     let progress = Progress::new(passes as u64 * mapper.work_per_pass(), None);
     let mut stopped = None;
-    let finished = std::sync::atomic::AtomicBool::new(false);
-    std::thread::scope(|scope| {
-        let reporter = settings.progress.then(|| {
-            scope.spawn(|| {
-                use std::io::IsTerminal;
-                let every = settings
-                    .progress_every
-                    .unwrap_or(crate::progress::PROGRESS_LOG_SECONDS);
-                progress.report(std::io::stderr().is_terminal(), every, &finished)
-            })
-        });
+    progress.while_running(settings.progress, settings.progress_every, || {
         for _ in 0..passes {
             if stop_on_signal && let Some(signal) = interrupt::interrupted() {
                 stopped = Some(Stopped::Signal(signal));
                 break;
             }
             mapper.pass(&progress);
-        }
-        finished.store(true, std::sync::atomic::Ordering::Relaxed);
-        if let Some(reporter) = reporter {
-            reporter.thread().unpark();
         }
     });
     let pixels = mapper.pixels.len() as u64;
@@ -357,18 +336,8 @@ pub fn converge(
             mapper.pass(&progress);
         }
         seconds += stage.elapsed().as_secs_f64();
-        let image = mapper.image();
-        let comparison = match region {
-            Some(region) => compare(&cut(&image, region)?, &cut(reference, region)?)?,
-            None => compare(&image, reference)?,
-        };
-        let point = ConvergencePoint {
-            spp: mapper.passes,
-            seconds,
-            rmse: comparison.rmse,
-            rel_mse: comparison.rel_mse,
-            ssim: comparison.ssim,
-        };
+        let point =
+            ConvergencePoint::measure(&mapper.image(), reference, region, mapper.passes, seconds)?;
         on_point(&point);
         points.push(point);
         next = next.saturating_mul(2);

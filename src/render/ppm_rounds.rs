@@ -76,152 +76,136 @@ pub fn render(
     let traced = per_light * lights.len() as u64;
     let gathered = Gathered::try_new(count)?;
     let mut board = vec![Color::BLACK; count];
-    let mut builder = rayon::ThreadPoolBuilder::new();
-    if let Some(threads) = settings.threads {
-        builder = builder.num_threads(threads.max(1));
-    }
-    let pool = builder
-        .build()
-        .map_err(|e| format!("cannot start worker threads: {e}"))?;
+    let pool = super::worker_pool(settings.threads)?;
     let camera_rays = count as u64 * SAMPLES_PER_ROUND as u64;
     let progress = Progress::new(rounds as u64 * (camera_rays + traced), None);
     let mut grid = PointGrid::default();
     let mut stopped = None;
     let mut done = 0;
-    let finished = std::sync::atomic::AtomicBool::new(false);
-    std::thread::scope(|scope| -> Result<(), String> {
-        let reporter = settings.progress.then(|| {
-            scope.spawn(|| {
-                use std::io::IsTerminal;
-                let every = settings
-                    .progress_every
-                    .unwrap_or(crate::progress::PROGRESS_LOG_SECONDS);
-                progress.report(std::io::stderr().is_terminal(), every, &finished)
-            })
-        });
-        for round in 0..rounds {
-            if stop_on_signal && let Some(signal) = interrupt::interrupted() {
-                stopped = Some(Stopped::Signal(signal));
-                break;
-            }
-            // 1. Camera pass, row by row from the top.
-            let rows: Vec<(Vec<Color>, Vec<ViewPoint>)> = pool.install(|| {
-                (0..height)
-                    .into_par_iter()
-                    .map(|row| {
-                        let y = height - 1 - row;
-                        let mut seen = vec![Color::BLACK; width];
-                        let mut points = Vec::new();
-                        for (x, seen) in seen.iter_mut().enumerate() {
-                            let pixel = (row * width + x) as u32;
-                            for s in 0..SAMPLES_PER_ROUND {
-                                let sample = (round * SAMPLES_PER_ROUND + s) as u64;
-                                let mut sampler = Sampler::new(
-                                    settings.sampler,
-                                    pixel as u64,
-                                    sample,
-                                    settings.seed,
-                                );
-                                let [u, v] = sampler.next_2d();
-                                let lens = if scene.plan().lens {
-                                    sampler.next_2d()
-                                } else {
-                                    [0.5, 0.5]
-                                };
-                                let time = if scene.plan().time {
-                                    sampler.next_f64()
-                                } else {
-                                    0.0
-                                };
-                                let ray = scene.camera().ray(
-                                    x as f64 + u - 0.5,
-                                    y as f64 + v - 0.5,
-                                    lens,
-                                    time,
-                                );
-                                camera_branch(
-                                    scene,
-                                    &ray,
-                                    camera_energy,
-                                    0,
-                                    pixel,
-                                    seen,
-                                    &mut points,
-                                );
+    progress.while_running(
+        settings.progress,
+        settings.progress_every,
+        || -> Result<(), String> {
+            for round in 0..rounds {
+                if stop_on_signal && let Some(signal) = interrupt::interrupted() {
+                    stopped = Some(Stopped::Signal(signal));
+                    break;
+                }
+                // 1. Camera pass, row by row from the top.
+                let rows: Vec<(Vec<Color>, Vec<ViewPoint>)> = pool.install(|| {
+                    (0..height)
+                        .into_par_iter()
+                        .map(|row| {
+                            let y = height - 1 - row;
+                            let mut seen = vec![Color::BLACK; width];
+                            let mut points = Vec::new();
+                            for (x, seen) in seen.iter_mut().enumerate() {
+                                let pixel = (row * width + x) as u32;
+                                for s in 0..SAMPLES_PER_ROUND {
+                                    let sample = (round * SAMPLES_PER_ROUND + s) as u64;
+                                    let mut sampler = Sampler::new(
+                                        settings.sampler,
+                                        pixel as u64,
+                                        sample,
+                                        settings.seed,
+                                    );
+                                    let [u, v] = sampler.next_2d();
+                                    let lens = if scene.plan().lens {
+                                        sampler.next_2d()
+                                    } else {
+                                        [0.5, 0.5]
+                                    };
+                                    let time = if scene.plan().time {
+                                        sampler.next_f64()
+                                    } else {
+                                        0.0
+                                    };
+                                    let ray = scene.camera().ray(
+                                        x as f64 + u - 0.5,
+                                        y as f64 + v - 0.5,
+                                        lens,
+                                        time,
+                                    );
+                                    camera_branch(
+                                        scene,
+                                        &ray,
+                                        camera_energy,
+                                        0,
+                                        pixel,
+                                        seen,
+                                        &mut points,
+                                    );
+                                }
                             }
-                        }
-                        progress.add(width as u64 * SAMPLES_PER_ROUND as u64);
-                        (seen, points)
-                    })
-                    .collect()
-            });
-            let mut seen = Vec::with_capacity(count);
-            let mut points = Vec::new();
-            for (row_seen, row_points) in rows {
-                seen.extend(row_seen);
-                points.extend(row_points);
-            }
-            if points.len() > u32::MAX as usize {
-                return Err(format!(
-                    "{} view points: too many for one round",
-                    points.len()
-                ));
-            }
-            // 2. The grid of view points, all of the round's radius.
-            let grid_points: Vec<GridPoint> = points
-                .iter()
-                .enumerate()
-                .map(|(index, view)| GridPoint {
-                    index: index as u32,
-                    point: view.point,
-                    radius,
-                })
-                .collect();
-            grid.rebuild(&grid_points);
-            // 3. Photon pass.
-            let pass = PhotonPass {
-                scene,
-                grid: &grid,
-                points: &points,
-                radius,
-                gathered: &gathered,
-            };
-            let tasks = traced.div_ceil(PHOTONS_PER_TASK);
-            pool.install(|| {
-                (0..tasks).into_par_iter().for_each(|task| {
-                    let first = task * PHOTONS_PER_TASK;
-                    let end = (first + PHOTONS_PER_TASK).min(traced);
-                    for i in first..end {
-                        let (position, color) = lights[(i / per_light) as usize];
-                        let mut sampler = Sampler::new(
-                            settings.sampler,
-                            round as u64,
-                            i,
-                            settings.seed ^ PHOTON_SALT,
-                        );
-                        let direction = uniform_sphere(sampler.next_2d());
-                        let ray = Ray::new(position, direction, 0.0);
-                        pass.trace(&ray, color, 0, photon_energy, 0, &mut sampler);
-                    }
-                    progress.add(end - first);
+                            progress.add(width as u64 * SAMPLES_PER_ROUND as u64);
+                            (seen, points)
+                        })
+                        .collect()
                 });
-            });
-            // 4. Each pixel adds the round over its camera rays so far.
-            let rays_so_far = ((round + 1) * SAMPLES_PER_ROUND) as f64;
-            for (index, value) in board.iter_mut().enumerate() {
-                let (_, photons) = gathered.take(index);
-                *value += (seen[index] + photons) / rays_so_far;
+                let mut seen = Vec::with_capacity(count);
+                let mut points = Vec::new();
+                for (row_seen, row_points) in rows {
+                    seen.extend(row_seen);
+                    points.extend(row_points);
+                }
+                if points.len() > u32::MAX as usize {
+                    return Err(format!(
+                        "{} view points: too many for one round",
+                        points.len()
+                    ));
+                }
+                // 2. The grid of view points, all of the round's radius.
+                let grid_points: Vec<GridPoint> = points
+                    .iter()
+                    .enumerate()
+                    .map(|(index, view)| GridPoint {
+                        index: index as u32,
+                        point: view.point,
+                        radius,
+                    })
+                    .collect();
+                grid.rebuild(&grid_points);
+                // 3. Photon pass.
+                let pass = PhotonPass {
+                    scene,
+                    grid: &grid,
+                    points: &points,
+                    radius,
+                    gathered: &gathered,
+                };
+                let tasks = traced.div_ceil(PHOTONS_PER_TASK);
+                pool.install(|| {
+                    (0..tasks).into_par_iter().for_each(|task| {
+                        let first = task * PHOTONS_PER_TASK;
+                        let end = (first + PHOTONS_PER_TASK).min(traced);
+                        for i in first..end {
+                            let (position, color) = lights[(i / per_light) as usize];
+                            let mut sampler = Sampler::new(
+                                settings.sampler,
+                                round as u64,
+                                i,
+                                settings.seed ^ PHOTON_SALT,
+                            );
+                            let direction = uniform_sphere(sampler.next_2d());
+                            let ray = Ray::new(position, direction, 0.0);
+                            pass.trace(&ray, color, 0, photon_energy, 0, &mut sampler);
+                        }
+                        progress.add(end - first);
+                    });
+                });
+                // 4. Each pixel adds the round over its camera rays so far.
+                let rays_so_far = ((round + 1) * SAMPLES_PER_ROUND) as f64;
+                for (index, value) in board.iter_mut().enumerate() {
+                    let (_, photons) = gathered.take(index);
+                    *value += (seen[index] + photons) / rays_so_far;
+                }
+                radius *= RADIUS_DECAY;
+                camera_energy /= RADIUS_DECAY;
+                done += 1;
             }
-            radius *= RADIUS_DECAY;
-            camera_energy /= RADIUS_DECAY;
-            done += 1;
-        }
-        finished.store(true, std::sync::atomic::Ordering::Relaxed);
-        if let Some(reporter) = reporter {
-            reporter.thread().unpark();
-        }
-        Ok(())
-    })?;
+            Ok(())
+        },
+    )?;
     let stats = RenderStats {
         seconds: start.elapsed().as_secs_f64(),
         samples: done as u64 * camera_rays,
