@@ -77,6 +77,7 @@ fn dragon(c: &mut Criterion) {
         smooth: false,
         material: 0,
         face_materials: None,
+        overridden_mtl: None,
     });
     let mut group = c.benchmark_group("bvh_build");
     group.sample_size(10);

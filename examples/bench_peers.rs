@@ -226,6 +226,7 @@ fn main() {
             smooth: false,
             material: 0,
             face_materials: None,
+            overridden_mtl: None,
         },
     );
     let start = Instant::now();

@@ -36,6 +36,7 @@ fn main() {
             smooth: false,
             material: 0,
             face_materials: None,
+            overridden_mtl: None,
         },
     );
     let start = Instant::now();

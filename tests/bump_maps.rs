@@ -170,6 +170,7 @@ fn constant_height_leaves_the_normal_unchanged() {
         smooth: true,
         material: 0,
         face_materials: None,
+        overridden_mtl: None,
     };
     for (name, root) in [("sphere", sphere), ("plane", plane), ("mesh", mesh)] {
         let scene = bumped_scene(root, constant(0.8), 2.0);

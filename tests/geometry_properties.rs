@@ -165,6 +165,7 @@ fn spawn_test_objects() -> Vec<(String, Object)> {
                 smooth: false,
                 material: 0,
                 face_materials: None,
+                overridden_mtl: None,
             },
         ));
     }

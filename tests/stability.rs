@@ -118,6 +118,7 @@ fn objects(scale: f64, offset: Vec3) -> Object {
                 smooth: false,
                 material: 0,
                 face_materials: None,
+                overridden_mtl: None,
             }),
         },
         Object::Transform {
@@ -220,6 +221,7 @@ fn the_full_dragon_with_degenerate_triangles_gives_finite_hits() {
         smooth: false,
         material: 0,
         face_materials: None,
+        overridden_mtl: None,
     };
     let scene = common::built(common::scene_with(materials(), root));
     let world = scene.world();

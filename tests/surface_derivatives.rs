@@ -54,6 +54,7 @@ fn shapes() -> Vec<(&'static str, Object)> {
         smooth: false,
         material: 0,
         face_materials: None,
+        overridden_mtl: None,
     };
     vec![
         ("sphere", ball(Point3::new(0.3, -0.2, 0.1), 1.2, 0)),

@@ -204,6 +204,7 @@ fn world_hits_find_the_density_their_light_sample_had() {
                 smooth: false,
                 material: 0,
                 face_materials: None,
+                overridden_mtl: None,
             },
         ),
         transformed(

@@ -19,6 +19,18 @@ pub enum LobeChoice {
     WholeWeights,
 }
 
+/// Whose reading of an OBJ's `.mtl` materials wins over the scene's
+/// `MaterialIndex`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MtlReading {
+    /// None: the scene's material (ours, with a warning).
+    #[default]
+    Ignored,
+    /// emily-jia's loader and `.mtl` reader
+    /// (see [`crate::render_scene::emily_jia_mtl`]).
+    EmilyJia,
+}
+
 /// yangjunx21's fixed index of refraction.
 const YANGJUNX21_IOR: f64 = 1.5;
 

@@ -34,7 +34,7 @@ mod photons;
 mod rows;
 mod summary;
 pub use integrator::Integrator;
-pub use material_rules::LobeChoice;
+pub use material_rules::{LobeChoice, MtlReading};
 pub use output::OutputCurve;
 pub use photons::{PhotonLook, PhotonMethod, SeenEmission};
 pub use summary::summary;
@@ -196,6 +196,12 @@ pub struct Look {
     /// triangle's from its winding), not turned toward the ray: a face
     /// seen from behind gets no diffuse light (hanna0911's).
     pub normals_as_stored: bool,
+    /// Whose reading of an OBJ's `.mtl` materials wins over the scene's
+    /// `MaterialIndex` (none: the scene's material).
+    pub mtl_reading: MtlReading,
+    /// Whether mesh triangles shade with their face normal, the file's
+    /// `vn` unused (emily-jia's).
+    pub face_normals: bool,
 }
 
 impl Look {
@@ -220,6 +226,7 @@ impl Look {
             revolutions_about_z: self.revolutions_about_z,
             revolution_test: self.revolution_test,
             framework_obj_reading: self.framework_obj_reading,
+            face_normals: self.face_normals,
         }
     }
 

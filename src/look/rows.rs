@@ -2,8 +2,8 @@
 //! its facts in `../shared/docs/looks.md`.
 
 use super::{
-    DispersionSensor, Integrator, LobeChoice, Look, Miss, OutputCurve, PixelSampling, PointLights,
-    RayOrigins, TextureFrames, TextureRows,
+    DispersionSensor, Integrator, LobeChoice, Look, Miss, MtlReading, OutputCurve, PixelSampling,
+    PointLights, RayOrigins, TextureFrames, TextureRows,
 };
 use crate::bsdf::DielectricFresnel;
 use crate::geometry::{RevolutionTest, SphereTest};
@@ -43,6 +43,8 @@ impl Look {
         lobe_choice: LobeChoice::Weights,
         framework_obj_reading: false,
         normals_as_stored: false,
+        mtl_reading: MtlReading::Ignored,
+        face_normals: false,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -104,6 +106,11 @@ impl Look {
         // Its sphere uses the hit's distance as the ray's parameter
         // (`emily-jia/graphic_homework:include/sphere.hpp`).
         sphere_test: SphereTest::DistanceAsParameter,
+        // Its OBJ loader gives faces their `.mtl` material whatever the
+        // scene's `MaterialIndex`, and its triangles their face normal
+        // (`emily-jia/graphic_homework:src/mesh.cpp`).
+        mtl_reading: MtlReading::EmilyJia,
+        face_normals: true,
         ..Look::PA1
     };
 

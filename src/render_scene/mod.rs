@@ -17,6 +17,7 @@
 use std::sync::Arc;
 
 mod casters;
+pub mod emily_jia_mtl;
 pub mod lobes;
 mod materials;
 mod notices;
@@ -31,8 +32,8 @@ use crate::camera::{Camera, MIN_LENS_RADIUS};
 use crate::color::Color;
 use crate::emitters::Emitters;
 use crate::look::{
-    DispersionSensor, Integrator, Look, Miss, PixelSampling, PointLights, TextureFrames,
-    TextureRows,
+    DispersionSensor, Integrator, Look, Miss, MtlReading, PixelSampling, PointLights,
+    TextureFrames, TextureRows,
 };
 use crate::math::{Aabb, Point3, Ray};
 use crate::medium::Medium;
@@ -380,6 +381,9 @@ fn apply_dispersion(scene: &mut Scene, dispersion: Dispersion) -> Option<Notice>
 /// scene's data: textures upside down for [`TextureRows::Down`], rewritten
 /// for [`TextureFrames::Cambrian`].
 fn adapt(scene: &mut Scene, look: &Look) {
+    if look.mtl_reading == MtlReading::EmilyJia {
+        emily_jia_mtl::apply(scene);
+    }
     scene
         .materials
         .iter_mut()

@@ -121,9 +121,17 @@ impl Builder {
                     );
                 }
                 let key = Arc::as_ptr(mesh);
-                let smooth_somewhere = self.smooth.contains(&key);
+                let face_normals = self.rules.face_normals;
+                let smooth_somewhere = self.smooth.contains(&key) && !face_normals;
                 let shared = self.meshes.entry(key).or_insert_with(|| {
-                    let data = Arc::clone(mesh);
+                    let data = if face_normals && mesh.normals.is_some() {
+                        Arc::new(MeshData {
+                            normals: None,
+                            ..MeshData::clone(mesh)
+                        })
+                    } else {
+                        Arc::clone(mesh)
+                    };
                     Arc::new(if smooth_somewhere {
                         Mesh::with_smooth_normals(data)
                     } else {
@@ -132,7 +140,7 @@ impl Builder {
                 });
                 Some(Shape::Mesh {
                     mesh: Arc::clone(shared),
-                    smooth: *smooth,
+                    smooth: *smooth && !face_normals,
                 })
             }
             Object::Revolution { profile, .. } => Revolution::new(profile).map(|mut revolution| {

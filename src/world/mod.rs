@@ -96,6 +96,9 @@ pub struct ShapeRules {
     /// Meshes are made of their OBJ file's framework reading, when it has
     /// one (see `MeshData::framework_reading`).
     pub framework_obj_reading: bool,
+    /// Mesh triangles shade with their face normal, the file's `vn` and
+    /// `smooth` unused.
+    pub face_normals: bool,
 }
 
 /// The box a linear primitive is culled by (see `World::linear_boxes`):

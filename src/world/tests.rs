@@ -35,6 +35,7 @@ fn build_composes_transforms_and_shares_meshes() {
         smooth: false,
         material,
         face_materials: None,
+        overridden_mtl: None,
     };
     let root = Object::Group(vec![
         translate(

@@ -242,6 +242,7 @@ fn emissive_mesh() -> Scene {
             smooth: false,
             material: 3,
             face_materials: None,
+            overridden_mtl: None,
         },
     ));
     objects.push(transform(
@@ -251,6 +252,7 @@ fn emissive_mesh() -> Scene {
             smooth: false,
             material: 0,
             face_materials: None,
+            overridden_mtl: None,
         },
     ));
     common::scene_with(materials, Object::Group(objects))

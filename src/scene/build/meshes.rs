@@ -4,7 +4,9 @@
 //! The `.mtl` materials are used when no `MaterialIndex` precedes the mesh
 //! in the scene (the current material is then the implicit default), or in
 //! bow's dialect, whose renderer lets them win over `MaterialIndex`;
-//! otherwise the scene's material wins, with a warning. Used `.mtl`
+//! otherwise the scene's material wins, with a warning, and the `.mtl`
+//! materials are kept as written (`OverriddenMtl`) for the looks whose
+//! renderer lets them win (`emj`, see `render_scene::emily_jia_mtl`). Used `.mtl`
 //! materials are converted once per file (see `mtl`) and appended to the
 //! scene's materials; triangles without `usemtl` keep the scene's material.
 //! A missing or unreadable `.mtl` is warned where its materials would be
@@ -21,7 +23,7 @@ use crate::limits::shown_path;
 use crate::scene::build::textures::MaterialImages;
 use crate::scene::build::{Context, mtl, obj};
 use crate::scene::error::{Location, SceneError};
-use crate::scene::model::{Dialect, OWN_MATERIAL};
+use crate::scene::model::{Dialect, OWN_MATERIAL, OverriddenMtl};
 
 /// The `MaterialIndex` that set the current material: its value and where.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,6 +37,8 @@ pub struct MeshInstance {
     pub mesh: Arc<MeshData>,
     /// Per triangle, when the `.mtl` materials apply (see `Object::Mesh`).
     pub face_materials: Option<Arc<[u32]>>,
+    /// The `.mtl` materials, as written, when `MaterialIndex` overrides them.
+    pub overridden_mtl: Option<Arc<OverriddenMtl>>,
 }
 
 /// One OBJ file, read.
@@ -46,6 +50,8 @@ struct MeshFile {
     face_materials: Option<Arc<[u32]>>,
     /// Warnings of its `.mtl` files, not given yet (see the module docs).
     library_warnings: Vec<String>,
+    /// Its `.mtl` materials as written, once some `MaterialIndex` overrode them.
+    overridden_mtl: Option<Arc<OverriddenMtl>>,
 }
 
 /// The scene's OBJ files and the `.mtl` materials they added.
@@ -112,6 +118,7 @@ impl Meshes {
                 materials: loaded.materials,
                 face_materials: None,
                 library_warnings: loaded.library_warnings,
+                overridden_mtl: None,
             };
             self.files.insert(path.to_path_buf(), file);
         }
@@ -128,6 +135,7 @@ impl Meshes {
         let plain = |mesh| MeshInstance {
             mesh,
             face_materials: None,
+            overridden_mtl: None,
         };
         let Some(materials) = &file.materials else {
             return Ok(plain(mesh));
@@ -140,7 +148,13 @@ impl Meshes {
                 choice.location.line
             );
             context.warn(at, message)?;
-            return Ok(plain(mesh));
+            let overridden = file
+                .overridden_mtl
+                .get_or_insert_with(|| Arc::new(as_written(materials)));
+            return Ok(MeshInstance {
+                overridden_mtl: Some(Arc::clone(overridden)),
+                ..plain(mesh)
+            });
         }
         if file.face_materials.is_none() {
             let first = self.first_material + self.added.len();
@@ -159,6 +173,28 @@ impl Meshes {
         Ok(MeshInstance {
             mesh,
             face_materials: file.face_materials.clone(),
+            overridden_mtl: None,
         })
+    }
+}
+
+/// An OBJ's `.mtl` materials as written (see [`OverriddenMtl`]).
+fn as_written(materials: &obj::ObjMaterials) -> OverriddenMtl {
+    OverriddenMtl {
+        libraries: materials
+            .libraries
+            .iter()
+            .map(|library| library.text.clone())
+            .collect(),
+        materials: materials
+            .materials
+            .iter()
+            .enumerate()
+            .map(|(index, material)| {
+                let library = materials.library_of.get(index).copied();
+                (material.name.clone(), library.unwrap_or(usize::MAX))
+            })
+            .collect(),
+        faces: materials.faces.iter().copied().collect(),
     }
 }

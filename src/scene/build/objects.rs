@@ -237,6 +237,7 @@ impl ObjectBuilder {
             smooth,
             material: self.current,
             face_materials: instance.face_materials,
+            overridden_mtl: instance.overridden_mtl,
         })
     }
 

@@ -291,6 +291,20 @@ pub enum Light {
 /// In `Object::Mesh::face_materials`: the triangle has the mesh's own material.
 pub const OWN_MATERIAL: u32 = u32::MAX;
 
+/// An OBJ's `.mtl` materials that the scene's `MaterialIndex` overrides,
+/// kept as written for the looks whose renderer lets them win (`emj`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct OverriddenMtl {
+    /// The `.mtl` files the OBJ names, their text.
+    pub libraries: Vec<String>,
+    /// Per material of those files: its name and its library (an index
+    /// into `libraries`; out of range when not known).
+    pub materials: Vec<(String, usize)>,
+    /// Per triangle: an index into `materials`, or [`OWN_MATERIAL`] (no
+    /// `usemtl`).
+    pub faces: Arc<[u32]>,
+}
+
 /// A node of the object tree.
 #[derive(Clone, Debug)]
 pub enum Object {
@@ -344,6 +358,8 @@ pub enum Object {
         /// [`OWN_MATERIAL`] for `material`. `None`: every triangle has
         /// `material`.
         face_materials: Option<Arc<[u32]>>,
+        /// The `.mtl` materials that `material` overrides, when it does.
+        overridden_mtl: Option<Arc<OverriddenMtl>>,
     },
     Revolution {
         profile: Profile,
@@ -389,6 +405,15 @@ impl Object {
         match self {
             Object::Group(children) => children.iter().for_each(|c| c.for_each_leaf(visit)),
             Object::Transform { child, .. } => child.for_each_leaf(visit),
+            leaf => visit(leaf),
+        }
+    }
+
+    /// Calls `visit` on every leaf node, which it may change.
+    pub fn for_each_leaf_mut(&mut self, visit: &mut impl FnMut(&mut Object)) {
+        match self {
+            Object::Group(children) => children.iter_mut().for_each(|c| c.for_each_leaf_mut(visit)),
+            Object::Transform { child, .. } => child.for_each_leaf_mut(visit),
             leaf => visit(leaf),
         }
     }
