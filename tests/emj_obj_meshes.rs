@@ -89,3 +89,23 @@ fn emj_triangles_shade_with_their_face_normal() {
     assert!((theirs[1] - 0.2).abs() < 1e-6, "face normal: {theirs:?}");
     assert!((ours[1] - 0.1).abs() < 1e-6, "vertex normals: {ours:?}");
 }
+
+#[test]
+fn emj_weights_the_refracted_ray_by_the_mtl_index() {
+    // A black face seen head-on on a background of 0.5: the "refracted" ray
+    // of their tracer (`n cos_t + (d - (n.d) n) eta`, the normal facing the
+    // camera) goes straight back to the background, weighted 1 - r with
+    // Schlick's r of the two indices: ((1.5 - 1) / (1.5 + 1))^2 = 0.04 for
+    // `Ni 1.5`, 0 for `Ni 1`.
+    let pixel = |ni: &str| {
+        let mtl = format!("newmtl glass\nNi {ni}\nKd 0 0 0\nillum 2\n");
+        let (mesh, dir) = write_mesh("emj-ni", "usemtl glass\n", "f 1 2 3", Some(&mtl));
+        let text = scene(&mesh).replace("color 0 0 0", "color 0.5 0.5 0.5");
+        let red = middle("emj-ni", &text, Look::EMJ)[0];
+        std::fs::remove_dir_all(dir).ok();
+        red
+    };
+    let (glass, air) = (pixel("1.5"), pixel("1"));
+    assert!((glass - 0.96 * 0.5).abs() < 1e-9, "Ni 1.5: {glass}");
+    assert!((air - 0.5).abs() < 1e-9, "Ni 1: {air}");
+}

@@ -11,11 +11,21 @@
 //!   (`reflective`, `transmissive`), untinted, refraction by its index (no
 //!   ray on total internal reflection); branches whose weight falls below
 //!   1e-3 end black.
-//! - [`radiance_unshadowed`] (emily-jia's): no shadow rays; the mirror ray
-//!   weighted `r ks` and the "refracted" ray `1 - r`, untinted, with `r`
-//!   Schlick's of the index ratio. Its parser leaves every index at 1,
-//!   which makes the refracted ray of a front-facing hit the mirror ray and
-//!   that of a back-facing hit the ray itself, and `r = (1 - |cos|)^5`.
+//! - [`radiance_unshadowed`] (emily-jia's,
+//!   `emily-jia/graphic_homework:src/RayTracer.cpp`): no shadow rays; the
+//!   mirror ray weighted `r ks` and the "refracted" ray `1 - r`, untinted.
+//!   A ray carries the index of the medium it travels in (1 from the
+//!   camera; a refracted ray takes the index of the material it refracted
+//!   through); `r` is Schlick's with `r0` from the two indices and the
+//!   cosine of the ray (into a denser material) or of the refracted ray
+//!   (into a lighter one). Its refracted direction is
+//!   `n cos_t + (d - (n.d) n) eta` with `n` the normal as the shape gives
+//!   it, whichever side the ray comes from; where `cos_t^2 < 1e-3` there is
+//!   none (and `r` takes the cosine 0 into a lighter material). Its parser
+//!   leaves every scene material at index 1, which makes the refracted ray
+//!   of a front-facing hit the mirror ray and that of a back-facing hit the
+//!   ray itself, and `r = (1 - |cos|)^5`; its `.mtl` materials have their
+//!   `Ni` (see `render_scene::emily_jia_mtl`).
 //!
 //! A ray that misses brings back the background at every depth; emitting
 //! materials add their emission where they are hit.
@@ -88,10 +98,14 @@ fn shadowed(scene: &RenderScene, ray: Ray, hits: u32, weight: f64) -> Color {
 /// emily-jia's Whitted estimator without shadow rays, `hits` surface hits
 /// deep (its last hit adds its local term only).
 pub fn radiance_unshadowed(scene: &RenderScene, ray: Ray, hits: u32) -> Color {
-    unshadowed(scene, ray, hits.min(MAX_WHITTED_DEPTH))
+    unshadowed(scene, ray, hits.min(MAX_WHITTED_DEPTH), 1.0)
 }
 
-fn unshadowed(scene: &RenderScene, ray: Ray, hits: u32) -> Color {
+/// Below this squared cosine emily-jia's tracer makes no refracted ray.
+const GRAZING: f64 = 1e-3;
+
+/// The radiance along `ray`, which travels in a medium of index `index`.
+fn unshadowed(scene: &RenderScene, ray: Ray, hits: u32, index: f64) -> Color {
     if hits == 0 {
         return Color::BLACK;
     }
@@ -110,22 +124,30 @@ fn unshadowed(scene: &RenderScene, ray: Ray, hits: u32) -> Color {
         return color;
     }
     let d = ray.direction;
-    // Index 1 on both sides: Schlick's r0 is 0.
-    let r = (1.0 - d.dot(&at.normal).abs()).powi(5);
     let mirror = mirror_direction(&d, &at.normal);
     let reflected = unshadowed(
         scene,
         Ray::new(at.spawn_origin(&mirror), mirror, ray.time),
         hits - 1,
+        index,
     );
-    // The refracted ray at index ratio 1: the mirror ray from the front,
-    // the ray itself from the back (the normal as the shape gives it).
-    let front = d.dot(&hit.geometric_normal) < 0.0;
-    let transmitted = if front {
-        reflected
+    // The "refracted" ray, by the normal as the shape gives it.
+    let n = hit.geometric_normal;
+    let (_, _, beyond) = at.material.lobes.mirror_and_glass();
+    let cos = n.dot(&d);
+    let eta = index / beyond;
+    let cos_t_squared = 1.0 - eta * eta * (1.0 - cos * cos);
+    let denser = index <= beyond;
+    let (transmitted, cos_r) = if cos_t_squared < GRAZING {
+        (Color::BLACK, if denser { cos } else { 0.0 })
     } else {
-        unshadowed(scene, Ray::new(at.spawn_origin(&d), d, ray.time), hits - 1)
+        let t = (n * cos_t_squared.sqrt() + (d - n * cos) * eta).normalize();
+        let next = Ray::new(at.spawn_origin(&t), t, ray.time);
+        let cos_r = if denser { cos } else { t.dot(&n) };
+        (unshadowed(scene, next, hits - 1, beyond), cos_r)
     };
+    let r0 = ((beyond - index) / (beyond + index)).powi(2);
+    let r = r0 + (1.0 - r0) * (1.0 - cos_r.abs()).powi(5);
     let ks = at.material.phong.map_or(Color::BLACK, |p| p.color);
     color + ks * reflected * r + transmitted * (1.0 - r)
 }

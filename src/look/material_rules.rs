@@ -26,7 +26,8 @@ pub enum MtlReading {
     /// None: the scene's material (ours, with a warning).
     #[default]
     Ignored,
-    /// emily-jia's loader and `.mtl` reader
+    /// emily-jia's loader and `.mtl` reader, whose materials have their
+    /// `Ni` while those of the scene file have index 1
     /// (see [`crate::render_scene::emily_jia_mtl`]).
     EmilyJia,
 }

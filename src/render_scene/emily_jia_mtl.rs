@@ -17,7 +17,8 @@
 //! The material is theirs `Material(Kd, Ks, Ns, Tr, Ni, Tf)`: diffuse
 //! colour `Kd`, specular colour `Ks` with exponent `Ns`, index of
 //! refraction `Ni` (transparency and transmitted colour are not rendered by
-//! it). Values never read are 0.
+//! it). Values never read are 0. The materials of the scene file itself
+//! have index 1: its parser sets none.
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -85,10 +86,15 @@ fn read_library(text: &str) -> HashMap<String, Values> {
     materials
 }
 
-/// Gives every mesh whose `.mtl` materials a `MaterialIndex` overrides
-/// their face materials as emily-jia's loader assigns them, appending the
-/// materials to the scene's (once per OBJ file).
+/// The scene's materials as emily-jia's renderer has them: those of the
+/// scene file at index 1 (its parser sets none), and every mesh whose
+/// `.mtl` materials a `MaterialIndex` overrides given its face materials as
+/// its loader assigns them, the materials appended to the scene's (once
+/// per OBJ file).
 pub fn apply(scene: &mut Scene) {
+    for material in &mut scene.materials {
+        material.ior = 1.0;
+    }
     let mut done: HashMap<*const OverriddenMtl, Arc<[u32]>> = HashMap::new();
     let materials = &mut scene.materials;
     scene.root.for_each_leaf_mut(&mut |leaf| {
