@@ -192,6 +192,14 @@ pub struct Look {
     /// entering it, bending towards the normal by 1/ior, and is never
     /// totally reflected).
     pub every_hit_enters: bool,
+    /// Whether OBJ faces are read as the course framework's loader reads
+    /// them (one flat triangle per face, `v/vt/vn` corners read in pairs:
+    /// see `MeshData::framework_reading`).
+    pub framework_obj_reading: bool,
+    /// Whether ray casting shades with the normal as the shape stores it (a
+    /// triangle's from its winding), not turned toward the ray: a face
+    /// seen from behind gets no diffuse light (hanna0911's).
+    pub normals_as_stored: bool,
 }
 
 impl Look {
@@ -214,6 +222,7 @@ impl Look {
             planes_accept_zero: self.planes_accept_zero,
             sphere_test: self.sphere_test,
             revolutions_about_z: self.revolutions_about_z,
+            framework_obj_reading: self.framework_obj_reading,
         }
     }
 
