@@ -4,6 +4,7 @@ use std::f64::consts::PI;
 
 use super::UvMapping;
 use super::cambrian_sphere;
+use super::single_precision;
 use super::{
     Intersection, SurfaceHit, derivatives_or_fallback, fallback_derivatives, normalize_or,
 };
@@ -27,6 +28,10 @@ pub enum SphereTest {
     /// transform that scales the direction), the normal from that point,
     /// inwards from inside (`u` is 1); rays leave it offset as usual.
     DistanceAsParameter,
+    /// W-Solaris's, in single precision ([`single_precision::sphere`]):
+    /// the near root from `t_min` on (0 itself included), else the far
+    /// one; the point and normal as the robust test's.
+    SinglePrecision,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -68,6 +73,10 @@ impl Sphere {
         }
         if self.test == SphereTest::DistanceAsParameter {
             return self.intersect_by_distance(&center, ray, t_min, t_max);
+        }
+        if self.test == SphereTest::SinglePrecision {
+            let t = single_precision::sphere(&center, self.radius, ray, t_min, t_max)?;
+            return Some(Intersection::new(t, 0.0, 0.0));
         }
         let f = ray.origin - center;
         let d = ray.direction;
@@ -186,7 +195,7 @@ impl Sphere {
         normal: Vec3,
     ) -> (Point3, Vec3) {
         match self.test {
-            SphereTest::Robust => (point, normal),
+            SphereTest::Robust | SphereTest::SinglePrecision => (point, normal),
             SphereTest::Cambrian | SphereTest::DistanceAsParameter => {
                 let point = ray.at(hit.t);
                 let inside = hit.u != 0.0;

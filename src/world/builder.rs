@@ -6,7 +6,7 @@ use std::sync::Arc;
 use super::{Primitive, ShapeRules};
 use crate::geometry::MeshData;
 use crate::geometry::{
-    Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, Transform, Triangle,
+    Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, SphereTest, Transform, Triangle,
 };
 use crate::math::Matrix;
 use crate::scene::model::Object;
@@ -26,7 +26,7 @@ fn swap_y_z() -> Transform {
 #[derive(Default)]
 pub(super) struct Builder {
     pub(super) primitives: Vec<Primitive>,
-    /// The look's rules for planes and spheres.
+    /// The look's rules for planes, spheres and triangles.
     pub(super) rules: ShapeRules,
     /// One geometry mesh per distinct `MeshData` allocation.
     meshes: HashMap<*const MeshData, Arc<Mesh>>,
@@ -79,17 +79,26 @@ impl Builder {
                 ..
             } => (*radius != 0.0 && radius.is_finite()).then(|| {
                 let mut sphere = Sphere::new(*center, *radius, *motion);
-                sphere.test = self.rules.sphere_test;
+                sphere.test = if self.rules.single_precision {
+                    SphereTest::SinglePrecision
+                } else {
+                    self.rules.sphere_test
+                };
                 Shape::Sphere(sphere)
             }),
             Object::Plane { normal, offset, .. } => {
                 Plane::new(*normal, *offset).map(|mut plane| {
                     plane.one_sided = self.rules.one_sided_planes;
                     plane.accepts_zero = self.rules.planes_accept_zero;
+                    plane.single_precision = self.rules.single_precision;
                     Shape::Plane(plane)
                 })
             }
-            Object::Triangle { vertices, .. } => Some(Shape::Triangle(Triangle::new(*vertices))),
+            Object::Triangle { vertices, .. } => {
+                let mut triangle = Triangle::new(*vertices);
+                triangle.single_precision = self.rules.single_precision;
+                Some(Shape::Triangle(triangle))
+            }
             Object::Rectangle {
                 origin,
                 edge_u,
@@ -105,13 +114,16 @@ impl Builder {
             Object::Mesh { mesh, smooth, .. } => {
                 let key = Arc::as_ptr(mesh);
                 let smooth_somewhere = self.smooth.contains(&key);
+                let single_precision = self.rules.single_precision;
                 let shared = self.meshes.entry(key).or_insert_with(|| {
                     let data = Arc::clone(mesh);
-                    Arc::new(if smooth_somewhere {
+                    let mut built = if smooth_somewhere {
                         Mesh::with_smooth_normals(data)
                     } else {
                         Mesh::new(data)
-                    })
+                    };
+                    built.single_precision = single_precision;
+                    Arc::new(built)
                 });
                 Some(Shape::Mesh {
                     mesh: Arc::clone(shared),
