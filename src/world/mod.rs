@@ -97,6 +97,9 @@ pub struct ShapeRules {
     /// ([`crate::geometry::single_precision`]), whatever `sphere_test` and
     /// the plane rules say.
     pub single_precision: bool,
+    /// Meshes are made of their OBJ file's framework reading, when it has
+    /// one (see `MeshData::framework_reading`).
+    pub framework_obj_reading: bool,
 }
 
 /// The box a linear primitive is culled by (see `World::linear_boxes`):
