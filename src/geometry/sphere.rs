@@ -3,11 +3,10 @@
 use std::f64::consts::PI;
 
 use super::UvMapping;
-use super::cambrian_sphere;
-use super::single_precision;
 use super::{
     Intersection, SurfaceHit, derivatives_or_fallback, fallback_derivatives, normalize_or,
 };
+use super::{cambrian_sphere, cav_sphere, single_precision};
 use crate::math::{Aabb, Point3, Ray, Vec3};
 
 /// The rules of a sphere's ray test.
@@ -32,6 +31,11 @@ pub enum SphereTest {
     /// the near root from `t_min` on (0 itself included), else the far
     /// one; the point and normal as the robust test's.
     SinglePrecision,
+    /// cav's (see [`cav_sphere`]): its single-precision arithmetic, hits
+    /// from 1e-4, the normal inwards from inside (`u` is 1), and rays
+    /// leaving from the hit point (moved 1e-5 along their direction by
+    /// the test itself).
+    Cav,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -77,6 +81,14 @@ impl Sphere {
         if self.test == SphereTest::SinglePrecision {
             let t = single_precision::sphere(&center, self.radius, ray, t_min, t_max)?;
             return Some(Intersection::new(t, 0.0, 0.0));
+        }
+        if self.test == SphereTest::Cav {
+            let hit = cav_sphere::intersect(&center, self.radius, ray, t_min, t_max)?;
+            return Some(Intersection::new(
+                hit.t,
+                f64::from(u8::from(hit.inside)),
+                0.0,
+            ));
         }
         let f = ray.origin - center;
         let d = ray.direction;
@@ -196,7 +208,7 @@ impl Sphere {
     ) -> (Point3, Vec3) {
         match self.test {
             SphereTest::Robust | SphereTest::SinglePrecision => (point, normal),
-            SphereTest::Cambrian | SphereTest::DistanceAsParameter => {
+            SphereTest::Cambrian | SphereTest::DistanceAsParameter | SphereTest::Cav => {
                 let point = ray.at(hit.t);
                 let inside = hit.u != 0.0;
                 (point, if inside { -normal } else { normal })
