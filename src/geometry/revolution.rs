@@ -24,6 +24,17 @@ const MAX_ITERATIONS: usize = 32;
 /// Seeds farther than this (times the object size) beyond the best root are skipped.
 const SEED_MARGIN: f64 = 0.05;
 
+/// How surfaces of revolution meet rays.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum RevolutionTest {
+    /// Newton from deterministic seeds, only checked roots ([`Revolution`]).
+    #[default]
+    Exact,
+    /// yao-jz's: Newton steps from the nearest triangle of a tessellation,
+    /// unchecked, the normal facing the ray ([`super::SeededRevolution`]).
+    TessellationSeeded,
+}
+
 #[derive(Clone, Debug)]
 pub struct Revolution {
     curve: Curve,

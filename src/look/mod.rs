@@ -22,7 +22,7 @@
 
 use crate::bsdf::DielectricFresnel;
 use crate::bsdf::LookLobes;
-use crate::geometry::SphereTest;
+use crate::geometry::{RevolutionTest, SphereTest};
 use crate::scene::model::{CameraDesc, FovAxis, LensShape, Scene};
 use crate::world::ShapeRules;
 
@@ -175,6 +175,8 @@ pub struct Look {
     /// Whether surfaces of revolution turn about z (jefflyy's: the
     /// profile's y becomes z) rather than about y.
     pub revolutions_about_z: bool,
+    /// How surfaces of revolution meet rays (yao-jz's from a tessellation).
+    pub revolution_test: RevolutionTest,
     /// A photon-mapping renderer's conventions (`photons`); `None`: this
     /// project's photon mapping, when `--integrator sppm` asks for it.
     pub photons: Option<PhotonLook>,
@@ -208,6 +210,7 @@ impl Look {
             planes_accept_zero: self.planes_accept_zero,
             sphere_test: self.sphere_test,
             revolutions_about_z: self.revolutions_about_z,
+            revolution_test: self.revolution_test,
         }
     }
 

@@ -6,7 +6,7 @@ use super::{
     RayOrigins, TextureFrames, TextureRows,
 };
 use crate::bsdf::DielectricFresnel;
-use crate::geometry::SphereTest;
+use crate::geometry::{RevolutionTest, SphereTest};
 use crate::scene::model::{FovAxis, LensShape};
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -36,6 +36,7 @@ impl Look {
         dispersion_sensor: DispersionSensor::Spectral,
         sphere_test: SphereTest::Robust,
         revolutions_about_z: false,
+        revolution_test: RevolutionTest::Exact,
         photons: None,
         output: OutputCurve::Framework,
         emitters_reflect: true,

@@ -6,7 +6,8 @@ use std::sync::Arc;
 use super::{Primitive, ShapeRules};
 use crate::geometry::MeshData;
 use crate::geometry::{
-    Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, Transform, Triangle,
+    Disk, Mesh, Plane, Rectangle, Revolution, RevolutionTest, SeededRevolution, Shape, Sphere,
+    Transform, Triangle,
 };
 use crate::math::Matrix;
 use crate::scene::model::Object;
@@ -118,9 +119,14 @@ impl Builder {
                     smooth: *smooth,
                 })
             }
-            Object::Revolution { profile, .. } => {
-                Revolution::new(profile).map(|r| Shape::Revolution(Arc::new(r)))
-            }
+            Object::Revolution { profile, .. } => match self.rules.revolution_test {
+                RevolutionTest::Exact => {
+                    Revolution::new(profile).map(|r| Shape::Revolution(Arc::new(r)))
+                }
+                RevolutionTest::TessellationSeeded => {
+                    SeededRevolution::new(profile).map(|r| Shape::SeededRevolution(Arc::new(r)))
+                }
+            },
         };
         let about_z = self.rules.revolutions_about_z
             && matches!(object, Object::Revolution { .. })

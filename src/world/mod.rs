@@ -8,7 +8,7 @@ mod plain;
 mod primitive;
 
 use crate::accel::Bvh;
-use crate::geometry::{Intersection, Shape, SphereTest, UvMapping};
+use crate::geometry::{Intersection, RevolutionTest, Shape, SphereTest, UvMapping};
 use crate::math::{Aabb, Point3, Ray, Vec3, offset_origin};
 use crate::scene::model::Scene;
 
@@ -92,13 +92,17 @@ pub struct ShapeRules {
     /// Surfaces of revolution turn their profile's (x, y) about the **z**
     /// axis, the profile's y becoming z (jefflyy's), instead of about y.
     pub revolutions_about_z: bool,
+    pub revolution_test: RevolutionTest,
 }
 
 /// The box a linear primitive is culled by (see `World::linear_boxes`):
 /// its world bounds grown by a millionth of their size and distance from
 /// the origin, far more than the rounding of a slab test.
 fn culling_box(primitive: &Primitive) -> Option<Aabb> {
-    if !matches!(primitive.shape, Shape::Mesh { .. } | Shape::Revolution(_)) {
+    if !matches!(
+        primitive.shape,
+        Shape::Mesh { .. } | Shape::Revolution(_) | Shape::SeededRevolution(_)
+    ) {
         return None;
     }
     let bounds = primitive.bounds().filter(Aabb::is_valid)?;
