@@ -151,6 +151,7 @@ fn constant_height_leaves_the_normal_unchanged() {
     // A triangle with vertex normals: the interpolated normal is not the
     // face normal, and must survive a flat height map.
     let data = MeshData {
+        framework_reading: None,
         positions: vec![
             Point3::new(-1.0, -1.0, 0.0),
             Point3::new(1.0, -1.0, 0.0),

@@ -47,6 +47,7 @@ fn materials() -> Vec<Material> {
 fn octahedron() -> Arc<MeshData> {
     let p = |x: f64, y: f64, z: f64| Vec3::new(x, y, z);
     Arc::new(MeshData {
+        framework_reading: None,
         positions: vec![
             p(1.0, 0.0, 0.0),
             p(-1.0, 0.0, 0.0),

@@ -184,6 +184,7 @@ fn world_hits_find_the_density_their_light_sample_had() {
         ..Material::default()
     };
     let mesh = Arc::new(MeshData {
+        framework_reading: None,
         positions: vec![
             Point3::new(0.0, 0.0, 0.0),
             Point3::new(1.0, 0.0, 0.0),

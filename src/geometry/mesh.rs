@@ -24,6 +24,10 @@ pub struct MeshData {
     /// Per-vertex texture coordinates when the file has them.
     pub uvs: Option<Vec<[f64; 2]>>,
     pub triangles: Vec<[u32; 3]>,
+    /// The same file as the course framework's loader reads it (flat, its
+    /// own triangles: see `scene::build::obj_framework`), for the looks that
+    /// read OBJ files that way; `None` when it reads the same triangles.
+    pub framework_reading: Option<Arc<MeshData>>,
 }
 
 #[derive(Debug)]
@@ -194,6 +198,7 @@ mod tests {
     #[test]
     fn file_normals_and_uvs_are_interpolated_smooth_or_not() {
         let data = MeshData {
+            framework_reading: None,
             positions: vec![Point3::zeros(), Point3::x(), Point3::y()],
             normals: Some(vec![Vec3::z(), Vec3::new(1.0, 0.0, 1.0), Vec3::z()]),
             uvs: Some(vec![[0.0, 0.0], [2.0, 0.0], [0.0, 4.0]]),
@@ -225,6 +230,7 @@ mod tests {
     fn computed_normals_only_for_smooth_instances() {
         // A folded pair of triangles: the shared edge's vertices average both faces.
         let data = MeshData {
+            framework_reading: None,
             positions: vec![
                 Point3::zeros(),
                 Point3::x(),
@@ -252,6 +258,7 @@ mod tests {
     #[test]
     fn out_of_range_indices_are_ignored() {
         let data = MeshData {
+            framework_reading: None,
             positions: vec![Point3::zeros(), Point3::x(), Point3::y()],
             normals: None,
             uvs: None,

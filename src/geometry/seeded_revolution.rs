@@ -87,6 +87,7 @@ impl SeededRevolution {
             normals: None,
             uvs: None,
             triangles,
+            framework_reading: None,
         };
         Some(SeededRevolution {
             curve,

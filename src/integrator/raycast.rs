@@ -8,6 +8,8 @@
 //! do not fall off with distance (Achazwl's and aliezlo's `rc`, looks.md).
 //! `kd` is the material's colour or texel, `ks` and the exponent its
 //! `specularColor` and `shininess`. A ray that misses gives the background.
+//! `n` faces the ray, except in the looks that shade with the normal as the
+//! shape stores it (`Look::normals_as_stored`).
 
 use crate::color::Color;
 use crate::math::{Point3, Ray, Vec3};
@@ -20,7 +22,11 @@ pub fn radiance(scene: &RenderScene, ray: Ray) -> Color {
     let Some(hit) = scene.intersect(&ray) else {
         return scene.background();
     };
-    let at = scene.shade(&hit, &ray);
+    let mut at = scene.shade(&hit, &ray);
+    if scene.look().normals_as_stored && !at.entering {
+        // Back on the side the shape's normal points to (a triangle's winding).
+        at.normal = -at.normal;
+    }
     let v = -ray.direction;
     let mut sum = at.material.emission;
     for light in scene.lights() {

@@ -188,6 +188,14 @@ pub struct Look {
     pub emitters_reflect: bool,
     /// How a material's lobe is chosen from its written weights.
     pub lobe_choice: LobeChoice,
+    /// Whether OBJ faces are read as the course framework's loader reads
+    /// them (one flat triangle per face, `v/vt/vn` corners read in pairs:
+    /// see `MeshData::framework_reading`).
+    pub framework_obj_reading: bool,
+    /// Whether ray casting shades with the normal as the shape stores it (a
+    /// triangle's from its winding), not turned toward the ray: a face
+    /// seen from behind gets no diffuse light (hanna0911's).
+    pub normals_as_stored: bool,
 }
 
 impl Look {
@@ -211,6 +219,7 @@ impl Look {
             sphere_test: self.sphere_test,
             revolutions_about_z: self.revolutions_about_z,
             revolution_test: self.revolution_test,
+            framework_obj_reading: self.framework_obj_reading,
         }
     }
 

@@ -41,6 +41,8 @@ impl Look {
         output: OutputCurve::Framework,
         emitters_reflect: true,
         lobe_choice: LobeChoice::Weights,
+        framework_obj_reading: false,
+        normals_as_stored: false,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -65,6 +67,13 @@ impl Look {
         name: "han",
         renderer: "hanna0911/image-renderer (the framework's ray caster through pixel corners)",
         pixels: PixelSampling::Corner,
+        // Its Phong term uses the triangle's own normal, from its winding
+        // (`hanna0911/image-renderer:include/triangle.hpp`,
+        // `include/material.hpp`), and its meshes are made by the framework's
+        // OBJ loader: the Lucy statue of `scene12_lucyangle` renders as
+        // triangles joining unrelated vertices.
+        normals_as_stored: true,
+        framework_obj_reading: true,
         ..Look::PA1
     };
 

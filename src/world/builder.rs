@@ -104,6 +104,23 @@ impl Builder {
                 ..
             } => Disk::new(*center, *normal, *radius).map(Shape::Disk),
             Object::Mesh { mesh, smooth, .. } => {
+                if let Some(framework) = self.framework_reading(mesh) {
+                    let key = Arc::as_ptr(framework);
+                    let shared = Arc::clone(
+                        self.meshes
+                            .entry(key)
+                            .or_insert_with(|| Arc::new(Mesh::new(Arc::clone(framework)))),
+                    );
+                    return self.push(
+                        object,
+                        Shape::Mesh {
+                            mesh: shared,
+                            smooth: false,
+                        },
+                        transform,
+                        None,
+                    );
+                }
                 let key = Arc::as_ptr(mesh);
                 let smooth_somewhere = self.smooth.contains(&key);
                 let shared = self.meshes.entry(key).or_insert_with(|| {
@@ -141,21 +158,41 @@ impl Builder {
         } else {
             transform
         };
-        let material = object.material().unwrap_or(0);
         let face_materials = match object {
             Object::Mesh { face_materials, .. } => face_materials.clone(),
             _ => None,
         };
         if let Some(shape) = shape {
-            let transform = transform
-                .filter(|t| !t.is_identity())
-                .map(|t| Box::new(t.clone()));
-            self.primitives.push(Primitive {
-                shape,
-                transform,
-                material,
-                face_materials,
-            });
+            self.push(object, shape, transform, face_materials);
         }
+    }
+
+    /// The framework's reading of `mesh`, when the look reads OBJ files
+    /// that way and it differs from the standard one. It is flat (the
+    /// framework reads no `vn`) and its triangles have the mesh's own
+    /// material: the framework reads no `.mtl` either.
+    fn framework_reading<'m>(&self, mesh: &'m MeshData) -> Option<&'m Arc<MeshData>> {
+        self.rules
+            .framework_obj_reading
+            .then_some(mesh.framework_reading.as_ref())
+            .flatten()
+    }
+
+    fn push(
+        &mut self,
+        object: &Object,
+        shape: Shape,
+        transform: Option<&Transform>,
+        face_materials: Option<Arc<[u32]>>,
+    ) {
+        let transform = transform
+            .filter(|t| !t.is_identity())
+            .map(|t| Box::new(t.clone()));
+        self.primitives.push(Primitive {
+            shape,
+            transform,
+            material: object.material().unwrap_or(0),
+            face_materials,
+        });
     }
 }

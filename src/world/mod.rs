@@ -93,6 +93,9 @@ pub struct ShapeRules {
     /// axis, the profile's y becoming z (jefflyy's), instead of about y.
     pub revolutions_about_z: bool,
     pub revolution_test: RevolutionTest,
+    /// Meshes are made of their OBJ file's framework reading, when it has
+    /// one (see `MeshData::framework_reading`).
+    pub framework_obj_reading: bool,
 }
 
 /// The box a linear primitive is culled by (see `World::linear_boxes`):

@@ -24,6 +24,7 @@ fn translate(offset: Vec3, child: Object) -> Object {
 #[test]
 fn build_composes_transforms_and_shares_meshes() {
     let data = Arc::new(MeshData {
+        framework_reading: None,
         positions: vec![Point3::zeros(), Point3::x(), Point3::y()],
         normals: None,
         uvs: None,
@@ -90,6 +91,7 @@ fn random_primitives(rng: &mut crate::rng::Rng, count: usize) -> Vec<Primitive> 
     // A little mesh (a tetrahedron's four faces) for the instances.
     let tetrahedron = Arc::new(crate::geometry::Mesh::new(Arc::new(
         crate::geometry::MeshData {
+            framework_reading: None,
             positions: vec![
                 Point3::new(0.0, 0.0, 0.0),
                 Point3::new(1.5, 0.0, 0.2),

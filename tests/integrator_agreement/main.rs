@@ -213,6 +213,7 @@ fn textured() -> Scene {
 /// A unit square [-0.5, 0.5]^2 in the xz plane at y = 0, as two triangles.
 fn quad_mesh() -> Arc<MeshData> {
     Arc::new(MeshData {
+        framework_reading: None,
         positions: vec![
             Point3::new(-0.5, 0.0, -0.5),
             Point3::new(0.5, 0.0, -0.5),

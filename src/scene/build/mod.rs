@@ -14,6 +14,7 @@ mod meshes;
 mod mtl;
 mod obj;
 mod obj_check;
+mod obj_framework;
 mod objects;
 mod paths;
 mod profile;

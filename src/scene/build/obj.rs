@@ -10,7 +10,7 @@ use crate::limits::shown_path;
 use crate::limits::{MAX_MESH_BYTES, read_within};
 use crate::math::{Point3, Vec3};
 use crate::scene::build::degenerate::triangle_without_area;
-use crate::scene::build::obj_check;
+use crate::scene::build::{obj_check, obj_framework};
 use crate::scene::model::OWN_MATERIAL;
 
 /// A `.mtl` file as read: where it is and its text (to find the lines of
@@ -175,6 +175,7 @@ pub fn load_obj(path: &Path) -> Result<LoadedObj, String> {
             flat + mesh.triangles.len()
         ));
     }
+    mesh.framework_reading = obj_framework::framework_reading(&text);
     let has_vertices = !mesh.positions.is_empty();
     mesh.normals = normals.filter(|_| has_vertices);
     mesh.uvs = uvs.filter(|_| has_vertices);
