@@ -6,6 +6,7 @@
 pub mod cambrian_sphere;
 pub mod curve;
 pub mod disk;
+pub mod jefflyy_revolution;
 pub mod mesh;
 pub mod plane;
 pub mod profile_seeds;

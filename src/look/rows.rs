@@ -36,7 +36,7 @@ impl Look {
         dispersion_sensor: DispersionSensor::Spectral,
         sphere_test: SphereTest::Robust,
         revolutions_about_z: false,
-        revolution_test: RevolutionTest::Exact,
+        revolution_test: RevolutionTest::Robust,
         photons: None,
         output: OutputCurve::Framework,
         emitters_reflect: true,
@@ -87,6 +87,9 @@ impl Look {
         // Its RevSurface turns the profile about z
         // (`jefflyy/CG_2022spring:include/revsurface.hpp`).
         revolutions_about_z: true,
+        // Its Newton on the profile parameter, each step times the
+        // parameter (`jefflyy/CG_2022spring:include/revsurface.hpp`).
+        revolution_test: RevolutionTest::Jefflyy,
         ..Look::PA1
     };
 

@@ -27,7 +27,7 @@ fn swap_y_z() -> Transform {
 #[derive(Default)]
 pub(super) struct Builder {
     pub(super) primitives: Vec<Primitive>,
-    /// The look's rules for planes and spheres.
+    /// The look's rules for planes, spheres and surfaces of revolution.
     pub(super) rules: ShapeRules,
     /// One geometry mesh per distinct `MeshData` allocation.
     meshes: HashMap<*const MeshData, Arc<Mesh>>,
@@ -137,12 +137,13 @@ impl Builder {
                 })
             }
             Object::Revolution { profile, .. } => match self.rules.revolution_test {
-                RevolutionTest::Exact => {
-                    Revolution::new(profile).map(|r| Shape::Revolution(Arc::new(r)))
-                }
                 RevolutionTest::TessellationSeeded => {
                     SeededRevolution::new(profile).map(|r| Shape::SeededRevolution(Arc::new(r)))
                 }
+                test => Revolution::new(profile).map(|mut revolution| {
+                    revolution.test = test;
+                    Shape::Revolution(Arc::new(revolution))
+                }),
             },
         };
         let about_z = self.rules.revolutions_about_z
