@@ -4,6 +4,7 @@
 //! with respect to uv).
 
 pub mod cambrian_sphere;
+pub mod cav_sphere;
 pub mod curve;
 pub mod disk;
 pub mod jefflyy_revolution;

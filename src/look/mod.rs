@@ -189,6 +189,12 @@ pub struct Look {
     pub emitters_reflect: bool,
     /// How a material's lobe is chosen from its written weights.
     pub lobe_choice: LobeChoice,
+    /// Whether every hit counts as a ray entering its surface from outside
+    /// (cav's shapes turn their normals towards the ray before its tracer
+    /// asks which side the ray is on, so a ray leaving glass refracts as if
+    /// entering it, bending towards the normal by 1/ior, and is never
+    /// totally reflected).
+    pub every_hit_enters: bool,
     /// Whether OBJ faces are read as the course framework's loader reads
     /// them (one flat triangle per face, `v/vt/vn` corners read in pairs:
     /// see `MeshData::framework_reading`).

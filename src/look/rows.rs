@@ -41,6 +41,7 @@ impl Look {
         output: OutputCurve::Framework,
         emitters_reflect: true,
         lobe_choice: LobeChoice::Weights,
+        every_hit_enters: false,
         framework_obj_reading: false,
         normals_as_stored: false,
     };
@@ -110,12 +111,20 @@ impl Look {
     pub const CAV: Look = Look {
         name: "cav",
         renderer: "CaveSpiderLZJ/PathTracingFinal",
+        // Its tracer samples the lobes alone (no light samples): its
+        // images have that noise, and its glass is not reciprocal.
+        integrator: Integrator::Original,
         // Its paths stop at the 9th hit, which adds its emission.
         max_depth: 8,
         miss: Miss::Weighted,
         point_lights: PointLights::Never,
         phong_lobes: false,
         texture_rows: TextureRows::Down,
+        // Its spheres give the inward normal to a ray that starts inside,
+        // its triangles and planes flip theirs towards the ray
+        // (`CaveSpiderLZJ/PathTracingFinal:include/sphere.hpp`, `triangle.hpp`).
+        every_hit_enters: true,
+        sphere_test: SphereTest::Cav,
         ..Look::ORIGINAL
     };
 
