@@ -6,7 +6,8 @@ use std::sync::Arc;
 use super::{Primitive, ShapeRules};
 use crate::geometry::MeshData;
 use crate::geometry::{
-    Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, Transform, Triangle,
+    Disk, Mesh, Plane, Rectangle, Revolution, RevolutionTest, SeededRevolution, Shape, Sphere,
+    SphereTest, Transform, Triangle,
 };
 use crate::math::Matrix;
 use crate::scene::model::Object;
@@ -26,7 +27,8 @@ fn swap_y_z() -> Transform {
 #[derive(Default)]
 pub(super) struct Builder {
     pub(super) primitives: Vec<Primitive>,
-    /// The look's rules for planes, spheres and surfaces of revolution.
+    /// The look's rules for planes, spheres, triangles and surfaces of
+    /// revolution.
     pub(super) rules: ShapeRules,
     /// One geometry mesh per distinct `MeshData` allocation.
     meshes: HashMap<*const MeshData, Arc<Mesh>>,
@@ -79,17 +81,26 @@ impl Builder {
                 ..
             } => (*radius != 0.0 && radius.is_finite()).then(|| {
                 let mut sphere = Sphere::new(*center, *radius, *motion);
-                sphere.test = self.rules.sphere_test;
+                sphere.test = if self.rules.single_precision {
+                    SphereTest::SinglePrecision
+                } else {
+                    self.rules.sphere_test
+                };
                 Shape::Sphere(sphere)
             }),
             Object::Plane { normal, offset, .. } => {
                 Plane::new(*normal, *offset).map(|mut plane| {
                     plane.one_sided = self.rules.one_sided_planes;
                     plane.accepts_zero = self.rules.planes_accept_zero;
+                    plane.single_precision = self.rules.single_precision;
                     Shape::Plane(plane)
                 })
             }
-            Object::Triangle { vertices, .. } => Some(Shape::Triangle(Triangle::new(*vertices))),
+            Object::Triangle { vertices, .. } => {
+                let mut triangle = Triangle::new(*vertices);
+                triangle.single_precision = self.rules.single_precision;
+                Some(Shape::Triangle(triangle))
+            }
             Object::Rectangle {
                 origin,
                 edge_u,
@@ -103,13 +114,14 @@ impl Builder {
                 ..
             } => Disk::new(*center, *normal, *radius).map(Shape::Disk),
             Object::Mesh { mesh, smooth, .. } => {
+                let single_precision = self.rules.single_precision;
                 if let Some(framework) = self.framework_reading(mesh) {
                     let key = Arc::as_ptr(framework);
-                    let shared = Arc::clone(
-                        self.meshes
-                            .entry(key)
-                            .or_insert_with(|| Arc::new(Mesh::new(Arc::clone(framework)))),
-                    );
+                    let shared = Arc::clone(self.meshes.entry(key).or_insert_with(|| {
+                        let mut built = Mesh::new(Arc::clone(framework));
+                        built.single_precision = single_precision;
+                        Arc::new(built)
+                    }));
                     return self.push(
                         object,
                         Shape::Mesh {
@@ -132,21 +144,28 @@ impl Builder {
                     } else {
                         Arc::clone(mesh)
                     };
-                    Arc::new(if smooth_somewhere {
+                    let mut built = if smooth_somewhere {
                         Mesh::with_smooth_normals(data)
                     } else {
                         Mesh::new(data)
-                    })
+                    };
+                    built.single_precision = single_precision;
+                    Arc::new(built)
                 });
                 Some(Shape::Mesh {
                     mesh: Arc::clone(shared),
                     smooth: *smooth && !face_normals,
                 })
             }
-            Object::Revolution { profile, .. } => Revolution::new(profile).map(|mut revolution| {
-                revolution.test = self.rules.revolution_test;
-                Shape::Revolution(Arc::new(revolution))
-            }),
+            Object::Revolution { profile, .. } => match self.rules.revolution_test {
+                RevolutionTest::TessellationSeeded => {
+                    SeededRevolution::new(profile).map(|r| Shape::SeededRevolution(Arc::new(r)))
+                }
+                test => Revolution::new(profile).map(|mut revolution| {
+                    revolution.test = test;
+                    Shape::Revolution(Arc::new(revolution))
+                }),
+            },
         };
         let about_z = self.rules.revolutions_about_z
             && matches!(object, Object::Revolution { .. })
