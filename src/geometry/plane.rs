@@ -41,6 +41,19 @@ impl Plane {
         })
     }
 
+    /// The plane with cav's uv frame (`CaveSpiderLZJ/PathTracingFinal:include/plane.hpp`):
+    /// `w1 = normalize(a x n)`, `a` the y axis when `n.x > 0.1` and the x
+    /// axis otherwise, `w2 = n x w1`, and (u, v) = (p . w2, p . w1). A
+    /// normal along -x, where cav's `w1` is not a number, keeps ours.
+    pub fn with_cav_frame(mut self) -> Plane {
+        let n = self.normal;
+        let a = if n.x > 0.1 { Vec3::y() } else { Vec3::x() };
+        if let Some(w1) = a.cross(&n).try_normalize(1e-12) {
+            self.frame = (n.cross(&w1), w1);
+        }
+        self
+    }
+
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
         let denominator = self.normal.dot(&ray.direction);

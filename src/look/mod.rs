@@ -126,6 +126,10 @@ pub enum TextureFrames {
     /// Cambrian's: sphere longitudes from -z and rectangles that cut the
     /// image instead of stretching it (see [`crate::render_scene::texture_frames`]).
     Cambrian,
+    /// cav's: planes take their uv frame from the normal as cav's do, and
+    /// a texel is read at the coordinates times the material's
+    /// `textureScale`, wrapped (see [`crate::shading::cav_texel`]).
+    Cav,
 }
 
 /// One look's conventions.
@@ -226,6 +230,7 @@ impl Look {
             revolutions_about_z: self.revolutions_about_z,
             revolution_test: self.revolution_test,
             framework_obj_reading: self.framework_obj_reading,
+            cav_plane_frames: self.texture_frames == TextureFrames::Cav,
         }
     }
 

@@ -125,6 +125,7 @@ impl Look {
         // (`CaveSpiderLZJ/PathTracingFinal:include/sphere.hpp`, `triangle.hpp`).
         every_hit_enters: true,
         sphere_test: SphereTest::Cav,
+        texture_frames: TextureFrames::Cav,
         ..Look::ORIGINAL
     };
 

@@ -86,6 +86,9 @@ impl Builder {
                 Plane::new(*normal, *offset).map(|mut plane| {
                     plane.one_sided = self.rules.one_sided_planes;
                     plane.accepts_zero = self.rules.planes_accept_zero;
+                    if self.rules.cav_plane_frames {
+                        plane = plane.with_cav_frame();
+                    }
                     Shape::Plane(plane)
                 })
             }

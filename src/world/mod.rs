@@ -96,6 +96,8 @@ pub struct ShapeRules {
     /// Meshes are made of their OBJ file's framework reading, when it has
     /// one (see `MeshData::framework_reading`).
     pub framework_obj_reading: bool,
+    /// Planes take cav's uv frame (see [`crate::geometry::Plane::with_cav_frame`]).
+    pub cav_plane_frames: bool,
 }
 
 /// The box a linear primitive is culled by (see `World::linear_boxes`):
