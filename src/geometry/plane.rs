@@ -1,6 +1,7 @@
 //! Infinite planes `normal . p = offset` with a tiled uv frame derived from the normal.
 
 use super::UvMapping;
+use super::single_precision;
 use super::{Intersection, SurfaceHit};
 use crate::math::{Point3, Ray, Vec3, orthonormal_basis};
 
@@ -22,6 +23,10 @@ pub struct Plane {
     /// finds it again at distance 0, and again, as long as it travels
     /// against the normal).
     pub accepts_zero: bool,
+    /// Tested by W-Solaris's test in single precision
+    /// ([`single_precision::plane`]: one-sided, and hit at `t_min` too,
+    /// whatever `one_sided` and `accepts_zero` say).
+    pub single_precision: bool,
 }
 
 impl Plane {
@@ -38,6 +43,7 @@ impl Plane {
             frame: orthonormal_basis(&normal),
             one_sided: false,
             accepts_zero: false,
+            single_precision: false,
         })
     }
 
@@ -56,6 +62,10 @@ impl Plane {
 
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
+        if self.single_precision {
+            let t = single_precision::plane(&self.normal, self.offset, ray, t_min, t_max)?;
+            return Some(Intersection::new(t, 0.0, 0.0));
+        }
         let denominator = self.normal.dot(&ray.direction);
         if denominator == 0.0 || (self.one_sided && denominator > 0.0) {
             return None;
