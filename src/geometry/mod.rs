@@ -13,6 +13,7 @@ pub mod rectangle;
 pub mod revolution;
 pub mod shape;
 mod shape_sampling;
+pub mod single;
 pub mod sphere;
 mod sphere_sampling;
 pub mod surface_samples;

@@ -1,6 +1,7 @@
 //! Infinite planes `normal . p = offset` with a tiled uv frame derived from the normal.
 
 use super::UvMapping;
+use super::single;
 use super::{Intersection, SurfaceHit};
 use crate::math::{Point3, Ray, Vec3, orthonormal_basis};
 
@@ -22,6 +23,8 @@ pub struct Plane {
     /// finds it again at distance 0, and again, as long as it travels
     /// against the normal).
     pub accepts_zero: bool,
+    /// Met in single precision (yangjunx21's, see [`Plane::intersect`]).
+    pub single_precision: bool,
 }
 
 impl Plane {
@@ -38,11 +41,20 @@ impl Plane {
             frame: orthonormal_basis(&normal),
             one_sided: false,
             accepts_zero: false,
+            single_precision: false,
         })
     }
 
+    /// The hit with `t_min < t < t_max`. A plane of `single_precision`
+    /// computes `t = -(n . o - offset) / (n . d)` in single precision from
+    /// the ray rounded to it, as yangjunx21's `float` planes: a ray leaving
+    /// from a point that rounded to the far side of the plane meets it again
+    /// at a tiny `t`, from behind.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
+        if self.single_precision {
+            return self.intersect_single(ray, t_min, t_max);
+        }
         let denominator = self.normal.dot(&ray.direction);
         if denominator == 0.0 || (self.one_sided && denominator > 0.0) {
             return None;
@@ -50,6 +62,17 @@ impl Plane {
         let t = (self.offset - self.normal.dot(&ray.origin)) / denominator;
         let beyond_start = t > t_min || (self.accepts_zero && t == t_min);
         (beyond_start && t < t_max).then(|| Intersection::new(t, 0.0, 0.0))
+    }
+
+    fn intersect_single(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
+        let normal = single::single(&self.normal);
+        let denominator = single::dot(&normal, &single::single(&ray.direction));
+        if denominator == 0.0 || (self.one_sided && denominator > 0.0) {
+            return None;
+        }
+        let start = single::dot(&normal, &single::single(&ray.origin));
+        let t = f64::from(-(start - self.offset as f32) / denominator);
+        (t > t_min && t < t_max).then(|| Intersection::new(t, 0.0, 0.0))
     }
 
     pub fn surface(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
@@ -95,6 +118,22 @@ mod tests {
         // Leaving along the normal, a one-sided plane is not met at all.
         let up = Ray::new(down.origin, Vec3::y(), 0.0);
         assert!(plane.intersect(&up, 0.0, f64::INFINITY).is_none());
+    }
+
+    #[test]
+    fn a_single_precision_plane_is_met_again_from_a_point_rounded_behind_it() {
+        // yangjunx21's ceiling: y = 81.6 seen from below (normal 0 -1 0).
+        let mut plane = Plane::new(-Vec3::y(), -81.6).unwrap();
+        plane.single_precision = true;
+        let direction = Vec3::new(0.22425672220619774, 1.0, -0.1953505739617607);
+        let up = Ray::new(Point3::new(50.0, 20.0, 290.6), direction.normalize(), 0.0);
+        let hit = plane.intersect(&up, 0.0, f64::INFINITY).unwrap();
+        let at = single::point_at(&up, hit.t);
+        // This ray's hit rounds to above the ceiling in single precision.
+        assert!(at.y > f64::from(81.6f32), "{}", at.y);
+        let down = Ray::new(at, Vec3::new(0.3, -1.0, 0.2).normalize(), 0.0);
+        let again = plane.intersect(&down, 0.0, f64::INFINITY).unwrap();
+        assert!(again.t > 0.0 && again.t < 1e-4, "{}", again.t);
     }
 
     #[test]

@@ -23,6 +23,7 @@
 use crate::bsdf::DielectricFresnel;
 use crate::bsdf::LookLobes;
 use crate::geometry::SphereTest;
+use crate::sampler::SamplerKind;
 use crate::scene::model::{CameraDesc, FovAxis, LensShape, Scene};
 use crate::world::ShapeRules;
 
@@ -61,6 +62,23 @@ pub enum RayOrigins {
     /// again; inside an emitting mirror sphere it collects the emission at
     /// every bounce).
     AtHit,
+    /// At the hit point computed in single precision, `o + t d` from the ray
+    /// rounded to `float` (yangjunx21's; with its single-precision planes,
+    /// see [`Look::single_precision_planes`]).
+    AtHitSingle,
+}
+
+/// How the original integrator ends paths by chance.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Roulette {
+    /// Never: paths end at the look's depth.
+    Never,
+    /// yangjunx21's, from the 6th hit on: a path goes on when a uniform
+    /// draw from [-1, 1] is below `p`, the largest channel of the hit's
+    /// colour, and its throughput is then divided by `p`. It goes on with
+    /// probability (1 + p) / 2, not `p`, so each such hit brightens the
+    /// expected image by (1 + p) / (2 p).
+    SignedUniform,
 }
 
 /// What a ray that hits nothing brings back.
@@ -194,6 +212,17 @@ pub struct Look {
     /// triangle's from its winding), not turned toward the ray: a face
     /// seen from behind gets no diffuse light (hanna0911's).
     pub normals_as_stored: bool,
+    /// Whether planes are met in single precision (yangjunx21's `float`
+    /// vectors): with rays leaving from the hit itself
+    /// ([`RayOrigins::AtHitSingle`]), a bounce that rounded to the far side
+    /// of a wall meets it again, from behind, and leaves through it.
+    pub single_precision_planes: bool,
+    /// How paths end by chance in the original integrator.
+    pub roulette: Roulette,
+    /// The sample values (`--sampler` overrides it). A renderer that clamps
+    /// each pixel's average keeps less of a noisier pixel, so the noise of
+    /// its independent draws is part of its image.
+    pub sampler: SamplerKind,
 }
 
 impl Look {
@@ -217,6 +246,7 @@ impl Look {
             sphere_test: self.sphere_test,
             revolutions_about_z: self.revolutions_about_z,
             framework_obj_reading: self.framework_obj_reading,
+            single_precision_planes: self.single_precision_planes,
         }
     }
 

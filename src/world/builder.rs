@@ -86,6 +86,7 @@ impl Builder {
                 Plane::new(*normal, *offset).map(|mut plane| {
                     plane.one_sided = self.rules.one_sided_planes;
                     plane.accepts_zero = self.rules.planes_accept_zero;
+                    plane.single_precision = self.rules.single_precision_planes;
                     Shape::Plane(plane)
                 })
             }

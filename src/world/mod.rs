@@ -95,6 +95,8 @@ pub struct ShapeRules {
     /// Meshes are made of their OBJ file's framework reading, when it has
     /// one (see `MeshData::framework_reading`).
     pub framework_obj_reading: bool,
+    /// Planes are met in single precision (see `Plane::intersect`).
+    pub single_precision_planes: bool,
 }
 
 /// The box a linear primitive is culled by (see `World::linear_boxes`):

@@ -13,6 +13,8 @@ use crate::math::Ray;
 #[derive(Clone, Debug, Default)]
 pub struct PlainShapes {
     planes: Vec<(Plane, u32)>,
+    /// Planes met in single precision (a look's), by their own `intersect`.
+    other_planes: Vec<(Plane, u32)>,
     /// Spheres of the robust test.
     spheres: Vec<(Sphere, u32)>,
     /// Spheres of another test (a look's), by their own `intersect`.
@@ -25,7 +27,11 @@ pub struct PlainShapes {
 
 impl PlainShapes {
     pub fn push_plane(&mut self, plane: Plane, primitive: usize) {
-        self.planes.push((plane, primitive as u32));
+        if plane.single_precision {
+            self.other_planes.push((plane, primitive as u32));
+        } else {
+            self.planes.push((plane, primitive as u32));
+        }
     }
 
     pub fn push_sphere(&mut self, sphere: Sphere, primitive: usize) {
@@ -45,7 +51,7 @@ impl PlainShapes {
 
     /// Lowers `limit` to the nearest hit in `(t_min, limit)` and records it
     /// (primitive index, intersection) in `best`: the planes, then the
-    /// other spheres, then the robust spheres, each shape taking the hit
+    /// other planes, the other spheres, then the robust spheres, each shape taking the hit
     /// only when strictly nearer.
     #[inline]
     pub fn nearest(
@@ -60,6 +66,12 @@ impl PlainShapes {
             if let Some((index, t)) = group.nearest(&lanes, t_min, *limit) {
                 *limit = t;
                 *best = Some((index as usize, Intersection::new(t, 0.0, 0.0)));
+            }
+        }
+        for (plane, index) in &self.other_planes {
+            if let Some(hit) = plane.intersect(ray, t_min, *limit) {
+                *limit = hit.t;
+                *best = Some((*index as usize, hit));
             }
         }
         for (sphere, index) in &self.other_spheres {
@@ -88,6 +100,10 @@ impl PlainShapes {
                 .plane_groups
                 .iter()
                 .any(|group| group.any(&lanes, t_min, t_max))
+            || self
+                .other_planes
+                .iter()
+                .any(|(plane, _)| plane.intersect(ray, t_min, t_max).is_some())
             || self
                 .other_spheres
                 .iter()
