@@ -231,3 +231,60 @@ fn emj_hits_a_transformed_sphere_at_its_distance_used_as_parameter() {
         "{untransformed} {ours}"
     );
 }
+
+#[test]
+fn jef_misses_the_roots_near_the_start_of_a_profile() {
+    // A flat washer at z = 1 (the profile runs in from radius 2 to 0.5,
+    // x(s) = 0.5 + 1.5 (1 - s)^3) seen down its axis from z = 5 under a
+    // light along -z. jefflyy's Newton steps are scaled by the profile
+    // parameter s, so near s = 0 they crawl and stop short of the root:
+    // the washer's outer rim (s < 0.05: radius above 1.79) is missed and
+    // shows the black background, where the exact test sees it lit; its
+    // middle (s > 0.1) is lit the same under both.
+    const SIZE: usize = 21;
+    let text = format!(
+        "PerspectiveCamera {{ center 0 0 5 direction 0 0 -1 up 0 1 0 angle 60 width {SIZE} height {SIZE} }}\n\
+         Lights {{ numLights 1 DirectionalLight {{ direction 0 0 -1 color 1 1 1 }} }}\n\
+         Background {{ color 0 0 0 }}\n\
+         Materials {{ numMaterials 1 Material {{ diffuseColor 0.5 0.5 0.5 }} }}\n\
+         Group {{ numObjects 1 MaterialIndex 0 RevSurface {{ profile BezierCurve {{ controls \
+         [ 2 1 0 ] [ 0.5 1 0 ] [ 0.5 1 0 ] [ 0.5 1 0 ] }} }} }}"
+    );
+    let exact = Look {
+        revolution_test: pathtracer::geometry::RevolutionTest::Robust,
+        ..Look::JEF
+    };
+    let theirs = render_text("washer", &text, Look::JEF);
+    let ours = render_text("washer", &text, exact);
+    // The radius at which pixel (column, row)'s ray (through the pixel's
+    // corner, rows from the top) meets the plane z = 1, 4 below the eye.
+    let span = 2.0 * 30f64.to_radians().tan();
+    let radius = |column: usize, row: usize| {
+        let x = (column as f64 / SIZE as f64 - 0.5) * span;
+        let y = ((SIZE - 1 - row) as f64 / SIZE as f64 - 0.5) * span;
+        4.0 * x.hypot(y)
+    };
+    let (mut rim, mut middle) = (0, 0);
+    for row in 0..SIZE {
+        for column in 0..SIZE {
+            let r = radius(column, row);
+            let (theirs, ours) = (
+                theirs.pixels[row * SIZE + column].g,
+                ours.pixels[row * SIZE + column].g,
+            );
+            if (1.8..1.98).contains(&r) {
+                rim += 1;
+                assert_eq!(theirs, 0.0, "rim pixel ({column}, {row}) at radius {r}");
+                assert!(ours > 0.4, "rim pixel ({column}, {row}): {ours}");
+            } else if (0.6..1.6).contains(&r) {
+                middle += 1;
+                assert!(ours > 0.4, "middle pixel ({column}, {row}): {ours}");
+                assert!(
+                    (theirs - ours).abs() < 1e-4,
+                    "{theirs} {ours} at radius {r}"
+                );
+            }
+        }
+    }
+    assert!(rim > 10 && middle > 50, "{rim} {middle}");
+}

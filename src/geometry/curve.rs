@@ -54,6 +54,10 @@ impl Curve {
         Some(Curve { kind, controls })
     }
 
+    pub fn kind(&self) -> CurveKind {
+        self.kind
+    }
+
     pub fn controls(&self) -> &[Point2] {
         &self.controls
     }

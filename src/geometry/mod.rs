@@ -4,8 +4,10 @@
 //! with respect to uv).
 
 pub mod cambrian_sphere;
+pub mod cav_sphere;
 pub mod curve;
 pub mod disk;
+pub mod jefflyy_revolution;
 pub mod mesh;
 pub mod plane;
 pub mod profile_seeds;
@@ -27,7 +29,7 @@ pub use disk::Disk;
 pub use mesh::{Mesh, MeshData};
 pub use plane::Plane;
 pub use rectangle::Rectangle;
-pub use revolution::Revolution;
+pub use revolution::{Revolution, RevolutionTest};
 pub use shape::Shape;
 pub use sphere::{Sphere, SphereTest};
 pub use sphere_sampling::Cone;

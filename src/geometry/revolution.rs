@@ -14,9 +14,24 @@ use std::f64::consts::PI;
 use super::Profile;
 use super::UvMapping;
 use super::curve::Curve;
+use super::jefflyy_revolution;
 use super::profile_seeds::{RadialRay, SeedTessellation};
 use super::{Intersection, SurfaceHit, derivatives_or_fallback, normalize_or};
 use crate::math::{Aabb, Point3, Ray, Vec3, inverse_direction};
+
+/// The rules of a surface of revolution's ray test.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum RevolutionTest {
+    /// Seeds from a tessellation refined by Newton on (t, u): every root
+    /// the tolerance allows.
+    #[default]
+    Robust,
+    /// jefflyy's (see [`jefflyy_revolution`]): Newton on the profile
+    /// parameter alone from 1001 starts, its step scaled by the parameter,
+    /// which misses roots near the profile's start and, by rounding, some
+    /// elsewhere.
+    Jefflyy,
+}
 
 /// At most this many seeds per ray are refined (further ones are dropped).
 const MAX_SEEDS: usize = 48;
@@ -31,6 +46,8 @@ pub struct Revolution {
     /// Size of the object, the unit of the tolerances.
     scale: f64,
     seeds: SeedTessellation,
+    /// How rays meet it (the look's rule).
+    pub test: RevolutionTest,
     /// +1 or -1: makes `dS/du x dS/dtheta` point out of the solid that the
     /// profile bounds together with the axis, whichever way the profile runs.
     orientation: f64,
@@ -67,6 +84,7 @@ impl Revolution {
             bounds,
             scale,
             seeds,
+            test: RevolutionTest::Robust,
             orientation,
         })
     }
@@ -81,6 +99,9 @@ impl Revolution {
 
     /// Nearest hit; `u` is the profile parameter (`v` unused).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
+        if self.test == RevolutionTest::Jefflyy {
+            return jefflyy_revolution::intersect(&self.curve, ray, t_min, t_max);
+        }
         let (o, d) = (ray.origin, ray.direction);
         let (t0, t1) = self.bounds.expanded(1e-9 * self.scale).clip(
             &o,

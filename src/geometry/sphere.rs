@@ -3,10 +3,10 @@
 use std::f64::consts::PI;
 
 use super::UvMapping;
-use super::cambrian_sphere;
 use super::{
     Intersection, SurfaceHit, derivatives_or_fallback, fallback_derivatives, normalize_or,
 };
+use super::{cambrian_sphere, cav_sphere};
 use crate::math::{Aabb, Point3, Ray, Vec3};
 
 /// The rules of a sphere's ray test.
@@ -27,6 +27,11 @@ pub enum SphereTest {
     /// transform that scales the direction), the normal from that point,
     /// inwards from inside (`u` is 1); rays leave it offset as usual.
     DistanceAsParameter,
+    /// cav's (see [`cav_sphere`]): its single-precision arithmetic, hits
+    /// from 1e-4, the normal inwards from inside (`u` is 1), and rays
+    /// leaving from the hit point (moved 1e-5 along their direction by
+    /// the test itself).
+    Cav,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -68,6 +73,14 @@ impl Sphere {
         }
         if self.test == SphereTest::DistanceAsParameter {
             return self.intersect_by_distance(&center, ray, t_min, t_max);
+        }
+        if self.test == SphereTest::Cav {
+            let hit = cav_sphere::intersect(&center, self.radius, ray, t_min, t_max)?;
+            return Some(Intersection::new(
+                hit.t,
+                f64::from(u8::from(hit.inside)),
+                0.0,
+            ));
         }
         let f = ray.origin - center;
         let d = ray.direction;
@@ -187,7 +200,7 @@ impl Sphere {
     ) -> (Point3, Vec3) {
         match self.test {
             SphereTest::Robust => (point, normal),
-            SphereTest::Cambrian | SphereTest::DistanceAsParameter => {
+            SphereTest::Cambrian | SphereTest::DistanceAsParameter | SphereTest::Cav => {
                 let point = ray.at(hit.t);
                 let inside = hit.u != 0.0;
                 (point, if inside { -normal } else { normal })

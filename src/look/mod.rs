@@ -22,7 +22,7 @@
 
 use crate::bsdf::DielectricFresnel;
 use crate::bsdf::LookLobes;
-use crate::geometry::SphereTest;
+use crate::geometry::{RevolutionTest, SphereTest};
 use crate::sampler::SamplerKind;
 use crate::scene::model::{CameraDesc, FovAxis, LensShape, Scene};
 use crate::world::ShapeRules;
@@ -193,6 +193,8 @@ pub struct Look {
     /// Whether surfaces of revolution turn about z (jefflyy's: the
     /// profile's y becomes z) rather than about y.
     pub revolutions_about_z: bool,
+    /// How surfaces of revolution meet rays (jefflyy's Newton).
+    pub revolution_test: RevolutionTest,
     /// A photon-mapping renderer's conventions (`photons`); `None`: this
     /// project's photon mapping, when `--integrator sppm` asks for it.
     pub photons: Option<PhotonLook>,
@@ -204,6 +206,12 @@ pub struct Look {
     pub emitters_reflect: bool,
     /// How a material's lobe is chosen from its written weights.
     pub lobe_choice: LobeChoice,
+    /// Whether every hit counts as a ray entering its surface from outside
+    /// (cav's shapes turn their normals towards the ray before its tracer
+    /// asks which side the ray is on, so a ray leaving glass refracts as if
+    /// entering it, bending towards the normal by 1/ior, and is never
+    /// totally reflected).
+    pub every_hit_enters: bool,
     /// Whether OBJ faces are read as the course framework's loader reads
     /// them (one flat triangle per face, `v/vt/vn` corners read in pairs:
     /// see `MeshData::framework_reading`).
@@ -245,6 +253,7 @@ impl Look {
             planes_accept_zero: self.planes_accept_zero,
             sphere_test: self.sphere_test,
             revolutions_about_z: self.revolutions_about_z,
+            revolution_test: self.revolution_test,
             framework_obj_reading: self.framework_obj_reading,
             single_precision_planes: self.single_precision_planes,
         }

@@ -6,7 +6,7 @@ use super::{
     RayOrigins, Roulette, TextureFrames, TextureRows,
 };
 use crate::bsdf::DielectricFresnel;
-use crate::geometry::SphereTest;
+use crate::geometry::{RevolutionTest, SphereTest};
 use crate::sampler::SamplerKind;
 use crate::scene::model::{FovAxis, LensShape};
 
@@ -37,10 +37,12 @@ impl Look {
         dispersion_sensor: DispersionSensor::Spectral,
         sphere_test: SphereTest::Robust,
         revolutions_about_z: false,
+        revolution_test: RevolutionTest::Robust,
         photons: None,
         output: OutputCurve::Framework,
         emitters_reflect: true,
         lobe_choice: LobeChoice::Weights,
+        every_hit_enters: false,
         framework_obj_reading: false,
         normals_as_stored: false,
         single_precision_planes: false,
@@ -90,6 +92,9 @@ impl Look {
         // Its RevSurface turns the profile about z
         // (`jefflyy/CG_2022spring:include/revsurface.hpp`).
         revolutions_about_z: true,
+        // Its Newton on the profile parameter, each step times the
+        // parameter (`jefflyy/CG_2022spring:include/revsurface.hpp`).
+        revolution_test: RevolutionTest::Jefflyy,
         ..Look::PA1
     };
 
@@ -110,12 +115,20 @@ impl Look {
     pub const CAV: Look = Look {
         name: "cav",
         renderer: "CaveSpiderLZJ/PathTracingFinal",
+        // Its tracer samples the lobes alone (no light samples): its
+        // images have that noise, and its glass is not reciprocal.
+        integrator: Integrator::Original,
         // Its paths stop at the 9th hit, which adds its emission.
         max_depth: 8,
         miss: Miss::Weighted,
         point_lights: PointLights::Never,
         phong_lobes: false,
         texture_rows: TextureRows::Down,
+        // Its spheres give the inward normal to a ray that starts inside,
+        // its triangles and planes flip theirs towards the ray
+        // (`CaveSpiderLZJ/PathTracingFinal:include/sphere.hpp`, `triangle.hpp`).
+        every_hit_enters: true,
+        sphere_test: SphereTest::Cav,
         ..Look::ORIGINAL
     };
 

@@ -327,7 +327,9 @@ impl RenderScene {
     /// `hit` of `ray`, seen from the ray.
     #[inline(always)]
     pub fn shade(&self, hit: &WorldHit, ray: &Ray) -> Shading<'_> {
-        Shading::new(self.material(hit.material), hit, ray)
+        let mut at = Shading::new(self.material(hit.material), hit, ray);
+        at.entering |= self.look().every_hit_enters;
+        at
     }
 
     /// Bounds of the bounded shapes.

@@ -26,7 +26,7 @@ fn swap_y_z() -> Transform {
 #[derive(Default)]
 pub(super) struct Builder {
     pub(super) primitives: Vec<Primitive>,
-    /// The look's rules for planes and spheres.
+    /// The look's rules for planes, spheres and surfaces of revolution.
     pub(super) rules: ShapeRules,
     /// One geometry mesh per distinct `MeshData` allocation.
     meshes: HashMap<*const MeshData, Arc<Mesh>>,
@@ -136,9 +136,10 @@ impl Builder {
                     smooth: *smooth,
                 })
             }
-            Object::Revolution { profile, .. } => {
-                Revolution::new(profile).map(|r| Shape::Revolution(Arc::new(r)))
-            }
+            Object::Revolution { profile, .. } => Revolution::new(profile).map(|mut revolution| {
+                revolution.test = self.rules.revolution_test;
+                Shape::Revolution(Arc::new(revolution))
+            }),
         };
         let about_z = self.rules.revolutions_about_z
             && matches!(object, Object::Revolution { .. })

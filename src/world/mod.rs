@@ -8,7 +8,7 @@ mod plain;
 mod primitive;
 
 use crate::accel::Bvh;
-use crate::geometry::{Intersection, Shape, SphereTest, UvMapping};
+use crate::geometry::{Intersection, RevolutionTest, Shape, SphereTest, UvMapping};
 use crate::math::{Aabb, Point3, Ray, Vec3, offset_origin};
 use crate::scene::model::Scene;
 
@@ -92,6 +92,7 @@ pub struct ShapeRules {
     /// Surfaces of revolution turn their profile's (x, y) about the **z**
     /// axis, the profile's y becoming z (jefflyy's), instead of about y.
     pub revolutions_about_z: bool,
+    pub revolution_test: RevolutionTest,
     /// Meshes are made of their OBJ file's framework reading, when it has
     /// one (see `MeshData::framework_reading`).
     pub framework_obj_reading: bool,

@@ -25,7 +25,10 @@ impl Primitive {
     /// (see [`WorldHit::leaves_from_point`](super::WorldHit)).
     #[inline]
     pub fn leaves_from_point(&self) -> bool {
-        matches!(&self.shape, Shape::Sphere(sphere) if sphere.test == SphereTest::Cambrian)
+        matches!(
+            &self.shape,
+            Shape::Sphere(sphere) if matches!(sphere.test, SphereTest::Cambrian | SphereTest::Cav)
+        )
     }
 
     /// The material of element `element` (a mesh's triangle; 0 for other shapes).

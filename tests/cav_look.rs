@@ -1,0 +1,109 @@
+//! The facts of the look of CaveSpiderLZJ's path tracer (`cav`), one test
+//! per fact that changes pixels (../shared/docs/looks.md has the facts).
+
+mod common;
+
+use common::{mean, render_text};
+use pathtracer::geometry::{Sphere, SphereTest};
+use pathtracer::integrator::Integrator;
+use pathtracer::look::Look;
+use pathtracer::math::{Point3, Ray, Vec3};
+use pathtracer::rng::Rng;
+
+/// The camera under a glass plane (z = 0, its outside above), looking up
+/// with a 150 degree field: every camera ray meets the plane from inside,
+/// beyond the critical angle of index 1.5. Above, a plane that emits 1.
+const UNDER_GLASS: &str = "PerspectiveCamera { center 0 0 -1 direction 0 0 1 up 0 1 0 \
+     angle 150 width 4 height 4 focus 0 field 0 }\nBackground { color 0 0 0 }\n\
+     Materials { numMaterials 2\n\
+     Material { diffuseColor 1 1 1 refractiveIndex 1.5 Fresnel { fbase 0 fscale 1 power 100 } }\n\
+     Material { diffuseColor 0 0 0 luminance 1 1 1 } }\n\
+     Group { numObjects 2 MaterialIndex 0 Plane { normal 0 0 1 offset 0 }\n\
+     MaterialIndex 1 Plane { normal 0 0 -1 offset -10 } }";
+
+#[test]
+fn cav_glass_lets_a_leaving_ray_out_as_if_it_entered() {
+    // Entering glass no ray is totally reflected, and with fscale 1 and
+    // power 100 almost every ray refracts: the sky shows through (about 1).
+    // Leaving it beyond the critical angle, the rays are reflected down
+    // into the dark (but for a few rays of the tent filter near the
+    // critical angle).
+    let cav = mean(&render_text("under-glass", UNDER_GLASS, Look::CAV, 16));
+    assert!(cav > 0.8, "cav: {cav}");
+    let sided = Look {
+        every_hit_enters: false,
+        ..Look::CAV
+    };
+    let physical = mean(&render_text("under-glass", UNDER_GLASS, sided, 16));
+    assert!(physical < 0.2, "by the side of the normal: {physical}");
+}
+
+/// Rays from the floor that meet the cap of cav's light (a radius-600
+/// sphere whose cap hangs 5e-3 under the ceiling at z = 5), each followed
+/// by one diffuse ray leaving its hit point downwards: how many of those
+/// meet the sphere again.
+fn cap_rehits(test: SphereTest) -> usize {
+    let mut sphere = Sphere::new(Point3::new(0.0, 0.0, 604.995), 600.0, Vec3::zeros());
+    sphere.test = test;
+    let mut rng = Rng::new(31, 7);
+    let mut again = 0;
+    for _ in 0..20_000 {
+        let floor = Point3::new(4.0 * rng.next_f64() - 2.0, 4.0 * rng.next_f64() - 2.0, -5.0);
+        let up = Vec3::new(0.2 * rng.next_f64() - 0.1, 0.2 * rng.next_f64() - 0.1, 1.0);
+        let ray = Ray::new(floor, up.normalize(), 0.0);
+        let Some(hit) = sphere.intersect(&ray, 0.0, f64::INFINITY) else {
+            continue;
+        };
+        let down = Vec3::new(rng.next_f64() - 0.5, rng.next_f64() - 0.5, -1.0).normalize();
+        let point = ray.at(hit.t);
+        let leaving = match test {
+            SphereTest::Robust => point - Vec3::z() * 1e-9 * point.norm(),
+            _ => point,
+        };
+        let bounce = Ray::new(leaving, down, 0.0);
+        again += usize::from(sphere.intersect(&bounce, 0.0, f64::INFINITY).is_some());
+    }
+    again
+}
+
+#[test]
+fn cav_light_caps_are_met_again_by_rays_leaving_them() {
+    // cav's single-precision test rounds the hit on the cap ~1e-4 inside
+    // the big sphere, and a ray leaving it downwards meets the cap again
+    // from inside about one time in twenty.
+    let cav = cap_rehits(SphereTest::Cav);
+    assert!((200..=3000).contains(&cav), "cav: {cav} of 20000");
+    assert_eq!(cap_rehits(SphereTest::Robust), 0);
+}
+
+/// A white floor lit by a small, bright ball above it.
+const SMALL_LIGHT: &str = "PerspectiveCamera { center 0 0 5 direction 0 0 -1 up 0 1 0 \
+     angle 30 width 8 height 8 focus 0 field 0 }\nBackground { color 0 0 0 }\n\
+     Materials { numMaterials 2 Material { diffuseColor 0.5 0.5 0.5 }\n\
+     Material { diffuseColor 0 0 0 luminance 400 400 400 } }\n\
+     Group { numObjects 2 MaterialIndex 0 Plane { normal 0 0 1 offset 0 }\n\
+     MaterialIndex 1 Sphere { center 0 3 2 radius 0.05 } }";
+
+/// The spread of the pixels of a uniformly lit patch over their mean.
+fn relative_spread(look: Look) -> f64 {
+    let image = render_text("small-light", SMALL_LIGHT, look, 16);
+    let values: Vec<f64> = image.pixels.iter().map(|p| p.g).collect();
+    let m = values.iter().sum::<f64>() / values.len() as f64;
+    let variance = values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / values.len() as f64;
+    variance.sqrt() / m
+}
+
+#[test]
+fn cav_finds_its_lights_by_the_bounce_alone() {
+    // Without light samples only the bounces that happen to meet the small
+    // ball bring light: the floor is far noisier than with them.
+    let cav = relative_spread(Look::CAV);
+    let sampled = relative_spread(Look {
+        integrator: Integrator::Path,
+        ..Look::CAV
+    });
+    assert!(
+        cav > 3.0 * sampled,
+        "cav {cav}, with light samples {sampled}"
+    );
+}
