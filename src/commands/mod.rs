@@ -219,10 +219,14 @@ impl SamplingOptions {
         let integrator = self.integrator.unwrap_or(look.integrator);
         // Ray casting and tracing through fixed points of the pixels is
         // deterministic: one sample.
+        let fixed_camera_rays = look
+            .photons
+            .and_then(|photons| photons.fixed_camera_rays)
+            .filter(|_| integrator == Integrator::Sppm);
         let spp = if integrator.is_deterministic() && look.pixels.is_fixed() {
             1
         } else {
-            spp
+            fixed_camera_rays.unwrap_or(spp)
         };
         RenderSettings {
             width: self.width.unwrap_or(scene.camera.width),
@@ -244,17 +248,26 @@ impl SamplingOptions {
 }
 
 impl SamplingOptions {
-    /// A note when `settings` render fewer samples per pixel than the
-    /// `asked`: a look that ray casts through pixel centres (PA1's) renders
-    /// one, whatever `--spp` says.
+    /// A note when `settings` render another number of samples per pixel
+    /// than the `asked`: a look that ray casts through pixel centres
+    /// (PA1's) renders one, and yao-jz's photon mapper its 5 rounds of 8
+    /// camera rays, whatever `--spp` says.
     pub fn spp_notice(&self, settings: &RenderSettings, asked: u32) -> Option<String> {
-        (settings.spp < asked).then(|| {
-            format!(
-                "note: the {} look casts one ray through each pixel centre, as the course \
-                 framework did: 1 spp, not the {asked} asked (--look original path-traces it)",
-                settings.look.name
-            )
-        })
+        let look = settings.look.name;
+        let spp = settings.spp;
+        if spp == asked {
+            None
+        } else if spp == 1 {
+            Some(format!(
+                "note: the {look} look casts one ray through each pixel centre, as the course \
+                 framework did: 1 spp, not the {asked} asked (--look original path-traces it)"
+            ))
+        } else {
+            Some(format!(
+                "note: the {look} look traces {spp} camera rays per pixel, as its renderer \
+                 always did, not the {asked} asked (--look original path-traces it)"
+            ))
+        }
     }
 }
 

@@ -31,6 +31,10 @@ pub enum RevolutionTest {
     /// which misses roots near the profile's start and, by rounding, some
     /// elsewhere.
     Jefflyy,
+    /// yao-jz's: Newton steps from the nearest triangle of a tessellation,
+    /// unchecked, the normal facing the ray (a [`super::SeededRevolution`],
+    /// built instead of a `Revolution`).
+    TessellationSeeded,
 }
 
 /// At most this many seeds per ray are refined (further ones are dropped).

@@ -2,7 +2,10 @@
 
 use std::sync::Arc;
 
-use super::{Disk, Intersection, Mesh, Plane, Rectangle, Revolution, Sphere, SurfaceHit, Triangle};
+use super::{
+    Disk, Intersection, Mesh, Plane, Rectangle, Revolution, SeededRevolution, Sphere, SurfaceHit,
+    Triangle,
+};
 use crate::math::{Aabb, Ray};
 
 #[derive(Clone, Debug)]
@@ -18,6 +21,8 @@ pub enum Shape {
         smooth: bool,
     },
     Revolution(Arc<Revolution>),
+    /// A look's surface of revolution found from its tessellation (yao-jz's).
+    SeededRevolution(Arc<SeededRevolution>),
 }
 
 impl Shape {
@@ -31,6 +36,7 @@ impl Shape {
             Shape::Disk(s) => s.intersect(ray, t_min, t_max),
             Shape::Mesh { mesh, .. } => mesh.intersect(ray, t_min, t_max),
             Shape::Revolution(s) => s.intersect(ray, t_min, t_max),
+            Shape::SeededRevolution(s) => s.intersect(ray, t_min, t_max),
         }
     }
 
@@ -56,6 +62,7 @@ impl Shape {
             Shape::Disk(s) => s.surface(ray, hit),
             Shape::Mesh { mesh, smooth } => mesh.surface(ray, hit, *smooth),
             Shape::Revolution(s) => s.surface(ray, hit),
+            Shape::SeededRevolution(s) => s.surface(ray, hit),
         }
     }
 
@@ -69,6 +76,7 @@ impl Shape {
             Shape::Disk(s) => Some(s.bounds()),
             Shape::Mesh { mesh, .. } => mesh.bounds(),
             Shape::Revolution(s) => Some(s.bounds()),
+            Shape::SeededRevolution(s) => s.bounds(),
         }
     }
 

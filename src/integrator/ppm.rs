@@ -51,6 +51,17 @@ pub const GLASS_INDEX: f64 = 1.5;
 /// The fewest rounds: the camera's first energy is `1 / ln(rounds)`.
 pub const MIN_ROUNDS: u32 = 2;
 
+/// yao's rays do not leave from where they hit, nor from a point kept off
+/// the surface by the rounding of its position: a mirror ray (and a glass
+/// ray reflected inside) leaves from this far along the surface's own
+/// normal, a refracted ray from [`REFRACTED_OFFSET`] along its direction,
+/// a diffuse photon from [`DIFFUSE_OFFSET`] along the normal, whichever
+/// side it then goes to, and every ray takes hits at any distance above 0.
+/// A photon that leaves a surface through it thus finds that surface again.
+pub const MIRROR_OFFSET: f64 = 1e-3;
+pub const REFRACTED_OFFSET: f64 = 1e-2;
+pub const DIFFUSE_OFFSET: f64 = 1e-4;
+
 /// A camera branch below this energy ends.
 const MIN_CAMERA_ENERGY: f64 = 1e-9;
 /// Weights at or below this are not followed.
@@ -99,9 +110,10 @@ fn reflected(d: &Vec3, n: &Vec3) -> Vec3 {
     d - n * (2.0 * d.dot(n))
 }
 
-/// The direction through yao's glass of index [`GLASS_INDEX`]; total
-/// internal reflection reflects.
-fn through_glass(at: &Shading, d: &Vec3) -> Vec3 {
+/// The ray through yao's glass of index [`GLASS_INDEX`]: refracted, from
+/// [`REFRACTED_OFFSET`] along its direction; on total internal reflection
+/// reflected, from [`MIRROR_OFFSET`] along the surface's normal.
+fn through_glass(at: &Shading, d: &Vec3, time: f64) -> Ray {
     let n = at.normal;
     let eta = if at.entering {
         1.0 / GLASS_INDEX
@@ -111,17 +123,22 @@ fn through_glass(at: &Shading, d: &Vec3) -> Vec3 {
     let cos_i = -d.dot(&n);
     let cos2t = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
     if cos2t < 0.0 {
-        return reflected(d, &n);
+        return mirrored(at, d, time);
     }
-    (d * eta + n * (eta * cos_i - cos2t.sqrt())).normalize()
+    let direction = (d * eta + n * (eta * cos_i - cos2t.sqrt())).normalize();
+    Ray::new(at.point + direction * REFRACTED_OFFSET, direction, time)
 }
 
+/// The mirror ray, from [`MIRROR_OFFSET`] along the surface's normal.
+fn mirrored(at: &Shading, d: &Vec3, time: f64) -> Ray {
+    let origin = at.point + outward(at) * MIRROR_OFFSET;
+    Ray::new(origin, reflected(d, &at.normal), time)
+}
+
+/// The surface's own normal (the shape's, whichever side the ray came
+/// from), along which yao's rays leave.
 fn outward(at: &Shading) -> Vec3 {
     if at.entering { at.normal } else { -at.normal }
-}
-
-fn leaving(at: &Shading, direction: Vec3, time: f64) -> Ray {
-    Ray::new(at.spawn_origin(&direction), direction, time)
 }
 
 pub fn uniform_sphere(u: [f64; 2]) -> Vec3 {
@@ -157,7 +174,7 @@ pub fn camera_branch(
     let weights = branches(at.material);
     let d = ray.direction;
     if weights.glass > MIN_WEIGHT {
-        let next = leaving(&at, through_glass(&at, &d), ray.time);
+        let next = through_glass(&at, &d, ray.time);
         camera_branch(
             scene,
             &next,
@@ -169,7 +186,7 @@ pub fn camera_branch(
         );
     }
     if weights.mirror > MIN_WEIGHT {
-        let next = leaving(&at, reflected(&d, &at.normal), ray.time);
+        let next = mirrored(&at, &d, ray.time);
         camera_branch(
             scene,
             &next,
@@ -221,12 +238,12 @@ impl PhotonPass<'_> {
         let weights = branches(at.material);
         let d = ray.direction;
         if weights.mirror > MIN_WEIGHT {
-            let next = leaving(&at, reflected(&d, &at.normal), ray.time);
+            let next = mirrored(&at, &d, ray.time);
             let energy = energy * weights.mirror;
             self.trace(&next, color, depth + 1, energy, diffuse_hits, sampler);
         }
         if weights.glass > MIN_WEIGHT {
-            let next = leaving(&at, through_glass(&at, &d), ray.time);
+            let next = through_glass(&at, &d, ray.time);
             let energy = energy * weights.glass;
             self.trace(&next, color, depth + 1, energy, diffuse_hits, sampler);
         }
@@ -256,7 +273,7 @@ impl PhotonPass<'_> {
         let Some(direction) = (spread * phi.sin() + n * phi.cos()).try_normalize(1e-12) else {
             return;
         };
-        let next = leaving(&at, direction, ray.time);
+        let next = Ray::new(at.point + n * DIFFUSE_OFFSET, direction, ray.time);
         let color = color * at.color;
         let energy = energy * weights.diffuse;
         self.trace(&next, color, depth + 1, energy, diffuse_hits + 1, sampler);

@@ -193,7 +193,8 @@ pub struct Look {
     /// Whether surfaces of revolution turn about z (jefflyy's: the
     /// profile's y becomes z) rather than about y.
     pub revolutions_about_z: bool,
-    /// How surfaces of revolution meet rays (jefflyy's Newton).
+    /// How surfaces of revolution meet rays (jefflyy's Newton, yao-jz's
+    /// from a tessellation).
     pub revolution_test: RevolutionTest,
     /// A photon-mapping renderer's conventions (`photons`); `None`: this
     /// project's photon mapping, when `--integrator sppm` asks for it.

@@ -15,6 +15,7 @@
 //! (direct light too: no light sample).
 
 use super::{Integrator, Look, Miss, OutputCurve, PixelSampling, PointLights};
+use crate::geometry::RevolutionTest;
 use crate::scene::model::FovAxis;
 
 /// How a camera path adds an emitter it sees.
@@ -59,6 +60,10 @@ pub struct PhotonLook {
     /// channel (emission x 1000 times the colours so far, thousands), so
     /// its later hits add almost nothing.
     pub photon_hits: u32,
+    /// Camera rays per pixel that the renderer traces whatever it is
+    /// asked (yao-jz's 5 rounds of 8: the rounds are fixed in its code);
+    /// `None`: as many as `--spp` says.
+    pub fixed_camera_rays: Option<u32>,
 }
 
 /// Looks are compared whole (a render-time scene is built for one); the
@@ -74,6 +79,7 @@ const ALIEZLO: PhotonLook = PhotonLook {
     alpha: 0.7,
     seen_emission: SeenEmission::Plain,
     photon_hits: u32::MAX,
+    fixed_camera_rays: None,
 };
 
 impl Look {
@@ -159,12 +165,14 @@ impl Look {
             photons_per_pass: 100_000,
             initial_radius: 5.0,
             photon_hits: 6,
+            fixed_camera_rays: Some(40),
             ..ALIEZLO
         }),
         miss: Miss::Black,
         point_lights: PointLights::Never,
         phong_lobes: false,
         pixels: PixelSampling::Corner,
+        revolution_test: RevolutionTest::TessellationSeeded,
         ..Look::ORIGINAL
     };
 }

@@ -6,7 +6,8 @@ use std::sync::Arc;
 use super::{Primitive, ShapeRules};
 use crate::geometry::MeshData;
 use crate::geometry::{
-    Disk, Mesh, Plane, Rectangle, Revolution, Shape, Sphere, Transform, Triangle,
+    Disk, Mesh, Plane, Rectangle, Revolution, RevolutionTest, SeededRevolution, Shape, Sphere,
+    Transform, Triangle,
 };
 use crate::math::Matrix;
 use crate::scene::model::Object;
@@ -136,10 +137,15 @@ impl Builder {
                     smooth: *smooth,
                 })
             }
-            Object::Revolution { profile, .. } => Revolution::new(profile).map(|mut revolution| {
-                revolution.test = self.rules.revolution_test;
-                Shape::Revolution(Arc::new(revolution))
-            }),
+            Object::Revolution { profile, .. } => match self.rules.revolution_test {
+                RevolutionTest::TessellationSeeded => {
+                    SeededRevolution::new(profile).map(|r| Shape::SeededRevolution(Arc::new(r)))
+                }
+                test => Revolution::new(profile).map(|mut revolution| {
+                    revolution.test = test;
+                    Shape::Revolution(Arc::new(revolution))
+                }),
+            },
         };
         let about_z = self.rules.revolutions_about_z
             && matches!(object, Object::Revolution { .. })

@@ -104,7 +104,10 @@ pub struct ShapeRules {
 /// its world bounds grown by a millionth of their size and distance from
 /// the origin, far more than the rounding of a slab test.
 fn culling_box(primitive: &Primitive) -> Option<Aabb> {
-    if !matches!(primitive.shape, Shape::Mesh { .. } | Shape::Revolution(_)) {
+    if !matches!(
+        primitive.shape,
+        Shape::Mesh { .. } | Shape::Revolution(_) | Shape::SeededRevolution(_)
+    ) {
         return None;
     }
     let bounds = primitive.bounds().filter(Aabb::is_valid)?;
