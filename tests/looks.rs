@@ -278,14 +278,25 @@ fn wso_planes_keep_a_ray_that_leaves_from_a_point_on_them() {
     };
     scene.materials[2].emission = Color::gray(0.5);
     let red = |look: Look| mean(&scene, &settings(look, look.integrator, 64)).r;
-    let kept = red(Look::WSO);
+    // In f64 (the plane's own rule) and in W-Solaris's float32 test.
+    let in_f64 = Look {
+        ray_origins: pathtracer::look::RayOrigins::AtHit,
+        single_precision_hits: false,
+        ..Look::WSO
+    };
+    let kept = red(in_f64);
+    let kept_in_float32 = red(Look::WSO);
     let refracted_through = red(Look {
         planes_accept_zero: false,
-        ..Look::WSO
+        ..in_f64
     });
     // Through the glass the floor is 0.5 (its emission) times what the
     // glass does not reflect (Schlick: about 0.96); kept on the glass, a
     // path brings nothing.
     assert!(refracted_through > 0.45, "{refracted_through}");
     assert!(kept < 0.5 * refracted_through, "{kept} {refracted_through}");
+    assert!(
+        kept_in_float32 < 0.5 * refracted_through,
+        "{kept_in_float32} {refracted_through}"
+    );
 }

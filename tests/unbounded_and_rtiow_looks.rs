@@ -56,11 +56,14 @@ fn shu_paths_end_at_the_50th_hit_and_re2_at_the_10th() {
 
 #[test]
 fn alz_pt_paths_end_at_the_20th_hit_where_wso_ends_at_the_15th() {
-    // Rays leaving from an offset point (to see the depth alone).
+    // Rays leaving from an offset point of f64 shapes, diffuse bounces
+    // about the normal turned towards the ray (to see the depth alone).
     let scene = inside_a_glowing_sphere(0.9, 0.1);
     for (look, hits) in [(Look::ALZ_PT, 20), (Look::WSO, 15)] {
         let look = Look {
             ray_origins: pathtracer::look::RayOrigins::Offset,
+            single_precision_hits: false,
+            diffuse_about_modelled_normal: false,
             ..look
         };
         let m = mean(&render_text("alz-depth", &scene, look, 64));

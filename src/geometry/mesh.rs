@@ -38,6 +38,9 @@ pub struct Mesh {
     /// Area-weighted vertex normals, for `smooth` instances of a file
     /// without `vn` (see the module docs).
     computed_normals: Option<Vec<Vec3>>,
+    /// Tested by W-Solaris's triangle test in single precision
+    /// (`single_precision::triangle`).
+    pub single_precision: bool,
 }
 
 impl Mesh {
@@ -53,6 +56,7 @@ impl Mesh {
             data,
             triangles,
             computed_normals: None,
+            single_precision: false,
         }
     }
 
@@ -93,7 +97,12 @@ impl Mesh {
 
     /// Nearest triangle hit: `u, v` are barycentrics, `index` the triangle.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
-        let hit = self.triangles.intersect(ray, t_min, t_max)?;
+        let hit = if self.single_precision {
+            self.triangles
+                .intersect_single_precision(ray, t_min, t_max)?
+        } else {
+            self.triangles.intersect(ray, t_min, t_max)?
+        };
         Some(Intersection {
             t: hit.t,
             u: hit.b1,
@@ -105,7 +114,11 @@ impl Mesh {
 
     /// Whether any triangle lies on the ray within `(t_min, t_max)`.
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        self.triangles.occluded(ray, t_min, t_max)
+        if self.single_precision {
+            self.triangles.occluded_single_precision(ray, t_min, t_max)
+        } else {
+            self.triangles.occluded(ray, t_min, t_max)
+        }
     }
 
     /// The surface at a hit: the file's vertex normals are interpolated when it

@@ -16,7 +16,7 @@ pub mod revolution;
 pub mod seeded_revolution;
 pub mod shape;
 mod shape_sampling;
-pub mod single;
+pub mod single_precision;
 pub mod sphere;
 mod sphere_sampling;
 pub mod surface_samples;

@@ -1,7 +1,7 @@
 //! Infinite planes `normal . p = offset` with a tiled uv frame derived from the normal.
 
 use super::UvMapping;
-use super::single;
+use super::single_precision;
 use super::{Intersection, SurfaceHit};
 use crate::math::{Point3, Ray, Vec3, orthonormal_basis};
 
@@ -23,8 +23,13 @@ pub struct Plane {
     /// finds it again at distance 0, and again, as long as it travels
     /// against the normal).
     pub accepts_zero: bool,
-    /// Met in single precision (yangjunx21's, see [`Plane::intersect`]).
+    /// Tested by W-Solaris's test in single precision
+    /// ([`single_precision::plane`]: one-sided, and hit at `t_min` too,
+    /// whatever `one_sided` and `accepts_zero` say).
     pub single_precision: bool,
+    /// Tested by yangjunx21's test in single precision
+    /// ([`single_precision::plane_two_sided`]: from either side).
+    pub single_precision_two_sided: bool,
 }
 
 impl Plane {
@@ -42,18 +47,22 @@ impl Plane {
             one_sided: false,
             accepts_zero: false,
             single_precision: false,
+            single_precision_two_sided: false,
         })
     }
 
-    /// The hit with `t_min < t < t_max`. A plane of `single_precision`
-    /// computes `t = -(n . o - offset) / (n . d)` in single precision from
-    /// the ray rounded to it, as yangjunx21's `float` planes: a ray leaving
-    /// from a point that rounded to the far side of the plane meets it again
-    /// at a tiny `t`, from behind.
+    /// The hit with `t_min < t < t_max`, or by W-Solaris's or yangjunx21's
+    /// test in single precision when the plane has one.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
         if self.single_precision {
-            return self.intersect_single(ray, t_min, t_max);
+            let t = single_precision::plane(&self.normal, self.offset, ray, t_min, t_max)?;
+            return Some(Intersection::new(t, 0.0, 0.0));
+        }
+        if self.single_precision_two_sided {
+            let t =
+                single_precision::plane_two_sided(&self.normal, self.offset, ray, t_min, t_max)?;
+            return Some(Intersection::new(t, 0.0, 0.0));
         }
         let denominator = self.normal.dot(&ray.direction);
         if denominator == 0.0 || (self.one_sided && denominator > 0.0) {
@@ -62,17 +71,6 @@ impl Plane {
         let t = (self.offset - self.normal.dot(&ray.origin)) / denominator;
         let beyond_start = t > t_min || (self.accepts_zero && t == t_min);
         (beyond_start && t < t_max).then(|| Intersection::new(t, 0.0, 0.0))
-    }
-
-    fn intersect_single(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
-        let normal = single::single(&self.normal);
-        let denominator = single::dot(&normal, &single::single(&ray.direction));
-        if denominator == 0.0 || (self.one_sided && denominator > 0.0) {
-            return None;
-        }
-        let start = single::dot(&normal, &single::single(&ray.origin));
-        let t = f64::from(-(start - self.offset as f32) / denominator);
-        (t > t_min && t < t_max).then(|| Intersection::new(t, 0.0, 0.0))
     }
 
     pub fn surface(&self, ray: &Ray, hit: &Intersection) -> SurfaceHit {
@@ -124,11 +122,11 @@ mod tests {
     fn a_single_precision_plane_is_met_again_from_a_point_rounded_behind_it() {
         // yangjunx21's ceiling: y = 81.6 seen from below (normal 0 -1 0).
         let mut plane = Plane::new(-Vec3::y(), -81.6).unwrap();
-        plane.single_precision = true;
+        plane.single_precision_two_sided = true;
         let direction = Vec3::new(0.22425672220619774, 1.0, -0.1953505739617607);
         let up = Ray::new(Point3::new(50.0, 20.0, 290.6), direction.normalize(), 0.0);
         let hit = plane.intersect(&up, 0.0, f64::INFINITY).unwrap();
-        let at = single::point_at(&up, hit.t);
+        let at = single_precision::point_at(&up, hit.t);
         // This ray's hit rounds to above the ceiling in single precision.
         assert!(at.y > f64::from(81.6f32), "{}", at.y);
         let down = Ray::new(at, Vec3::new(0.3, -1.0, 0.2).normalize(), 0.0);

@@ -6,7 +6,7 @@ use super::UvMapping;
 use super::{
     Intersection, SurfaceHit, derivatives_or_fallback, fallback_derivatives, normalize_or,
 };
-use super::{cambrian_sphere, cav_sphere};
+use super::{cambrian_sphere, cav_sphere, single_precision};
 use crate::math::{Aabb, Point3, Ray, Vec3};
 
 /// The rules of a sphere's ray test.
@@ -27,6 +27,10 @@ pub enum SphereTest {
     /// transform that scales the direction), the normal from that point,
     /// inwards from inside (`u` is 1); rays leave it offset as usual.
     DistanceAsParameter,
+    /// W-Solaris's, in single precision ([`single_precision::sphere`]):
+    /// the near root from `t_min` on (0 itself included), else the far
+    /// one; the point and normal as the robust test's.
+    SinglePrecision,
     /// cav's (see [`cav_sphere`]): its single-precision arithmetic, hits
     /// from 1e-4, the normal inwards from inside (`u` is 1), and rays
     /// leaving from the hit point (moved 1e-5 along their direction by
@@ -73,6 +77,10 @@ impl Sphere {
         }
         if self.test == SphereTest::DistanceAsParameter {
             return self.intersect_by_distance(&center, ray, t_min, t_max);
+        }
+        if self.test == SphereTest::SinglePrecision {
+            let t = single_precision::sphere(&center, self.radius, ray, t_min, t_max)?;
+            return Some(Intersection::new(t, 0.0, 0.0));
         }
         if self.test == SphereTest::Cav {
             let hit = cav_sphere::intersect(&center, self.radius, ray, t_min, t_max)?;
@@ -199,7 +207,7 @@ impl Sphere {
         normal: Vec3,
     ) -> (Point3, Vec3) {
         match self.test {
-            SphereTest::Robust => (point, normal),
+            SphereTest::Robust | SphereTest::SinglePrecision => (point, normal),
             SphereTest::Cambrian | SphereTest::DistanceAsParameter | SphereTest::Cav => {
                 let point = ray.at(hit.t);
                 let inside = hit.u != 0.0;

@@ -1,6 +1,7 @@
 //! Single triangles: Möller–Trumbore in f64; zero-area triangles are never hit.
 
 use super::UvMapping;
+use super::single_precision;
 use super::{Intersection, SurfaceHit, derivatives_or_fallback, normalize_or};
 use crate::math::{Aabb, Point3, Ray, Vec3};
 
@@ -73,16 +74,26 @@ pub fn surface_vertices(p0: &Point3, p1: &Point3, p2: &Point3, b1: f64, b2: f64)
 #[derive(Clone, Copy, Debug)]
 pub struct Triangle {
     pub vertices: [Point3; 3],
+    /// Tested by W-Solaris's test in single precision
+    /// ([`single_precision::triangle`]).
+    pub single_precision: bool,
 }
 
 impl Triangle {
     pub fn new(vertices: [Point3; 3]) -> Self {
-        Triangle { vertices }
+        Triangle {
+            vertices,
+            single_precision: false,
+        }
     }
 
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
         let [p0, p1, p2] = &self.vertices;
+        if self.single_precision {
+            return single_precision::triangle(&self.vertices, ray, t_min, t_max)
+                .map(|(t, b1, b2)| Intersection::new(t, b1, b2));
+        }
         intersect_vertices(p0, p1, p2, ray, t_min, t_max)
             .map(|(t, b1, b2)| Intersection::new(t, b1, b2))
     }

@@ -7,9 +7,9 @@
 //! value, and costs one path per sample. Glass chooses between reflection
 //! and refraction by smallpt's roulette.
 
-use crate::bsdf::GlassChoice;
+use crate::bsdf::{BsdfFlags, GlassChoice};
 use crate::color::Color;
-use crate::geometry::single;
+use crate::geometry::single_precision;
 use crate::look::{RayOrigins, Roulette};
 use crate::math::Ray;
 use crate::sampler::Sampler;
@@ -106,11 +106,21 @@ pub fn radiance(
             });
             break;
         }
-        let direction = scattered.wi;
+        let direction = if scene.look().diffuse_about_modelled_normal
+            && !at.entering
+            && scattered.flags.contains(BsdfFlags::DIFFUSE_REFLECTION)
+        {
+            // The cosine lobe about the normal as modelled, which is
+            // the mirror image of the one about the normal turned back
+            // towards the ray.
+            -scattered.wi
+        } else {
+            scattered.wi
+        };
         let origin = match scene.look().ray_origins {
             RayOrigins::Offset => at.spawn_origin(&direction),
             RayOrigins::AtHit => ray.at(hit.t),
-            RayOrigins::AtHitSingle => single::point_at(&ray, hit.t),
+            RayOrigins::AtHitSinglePrecision => single_precision::point_at(&ray, hit.t),
         };
         ray = Ray::new(origin, direction, ray.time);
     }

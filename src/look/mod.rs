@@ -11,7 +11,7 @@
 //! | `physical` | this project's physically based rendering | path tracing | 5 | background, weighted, at every depth | when the scene has no emitter | yes | exact Fresnel |
 //! | `pa1` | the course framework's ray caster (Achazwl, aliezlo `rc`, Cambrian's first renders) | ray casting: Phong per light, no shadows, pixel centres | 1 | background | always | the framework's | none |
 //! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick; its sphere test (frosted glass balls); texels times the colour, its texture frames, its dispersion (one wavelength per camera sample times its colour) |
-//! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing by BSDF sampling, rays leaving from the hit itself | 15 hits | background, unweighted, at every depth | never | no | Schlick; planes one-sided and hit at distance 0 too; square lens |
+//! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing by BSDF sampling, rays leaving from the hit itself; spheres, planes and triangles met in f32 by its tests, diffuse bounces about the modelled normal (`alz-pt` keeps the f64 ones) | 15 hits | background, unweighted, at every depth | never | no | Schlick; planes one-sided and hit at distance 0 too; square lens |
 //! | `osb` | one-step-beh1nd | path tracing | unlimited (roulette) | black | never | no | reflect with 0.25 + R/2, unweighted; osb's `glossy` weight |
 //! | `ylc` | ylc2001 | path tracing | unlimited (roulette) | background, unweighted | never | no | Schlick |
 //! | `yzc` | yuzc19 | path tracing | 11 | background, weighted | never | no | Schlick; horizontal `angle`; square lens |
@@ -62,10 +62,11 @@ pub enum RayOrigins {
     /// again; inside an emitting mirror sphere it collects the emission at
     /// every bounce).
     AtHit,
-    /// At the hit point computed in single precision, `o + t d` from the ray
-    /// rounded to `float` (yangjunx21's; with its single-precision planes,
-    /// see [`Look::single_precision_planes`]).
-    AtHitSingle,
+    /// At the hit point computed in single precision, `origin + direction
+    /// t` in f32 (W-Solaris's, with its single-precision tests: see
+    /// [`Look::single_precision_hits`]; yangjunx21's, with its
+    /// single-precision planes: see [`Look::single_precision_planes`]).
+    AtHitSinglePrecision,
 }
 
 /// How the original integrator ends paths by chance.
@@ -173,6 +174,17 @@ pub struct Look {
     /// plane again at 0, hit after hit, until it is reflected away or its
     /// hits run out.
     pub planes_accept_zero: bool,
+    /// Whether spheres, planes and triangles meet rays by W-Solaris's tests
+    /// in single precision (`geometry::single_precision`): with rays leaving
+    /// from the f32 hit point ([`RayOrigins::AtHitSinglePrecision`]), a ray
+    /// finds the surface it leaves again about half the time, as in its
+    /// renderer.
+    pub single_precision_hits: bool,
+    /// Whether diffuse bounces are cosine-weighted about the surface's
+    /// normal as modelled (outward for a sphere, a triangle's own) rather
+    /// than about the normal turned towards the ray (W-Solaris's: a ray
+    /// that meets a surface from behind goes on through it).
+    pub diffuse_about_modelled_normal: bool,
     /// Whether a texel is multiplied by the material's colour (Cambrian's
     /// `colour x texture`) instead of replacing it (the original's).
     pub texture_times_color: bool,
@@ -223,7 +235,7 @@ pub struct Look {
     pub normals_as_stored: bool,
     /// Whether planes are met in single precision (yangjunx21's `float`
     /// vectors): with rays leaving from the hit itself
-    /// ([`RayOrigins::AtHitSingle`]), a bounce that rounded to the far side
+    /// ([`RayOrigins::AtHitSinglePrecision`]), a bounce that rounded to the far side
     /// of a wall meets it again, from behind, and leaves through it.
     pub single_precision_planes: bool,
     /// How paths end by chance in the original integrator.
@@ -254,6 +266,7 @@ impl Look {
             planes_accept_zero: self.planes_accept_zero,
             sphere_test: self.sphere_test,
             revolutions_about_z: self.revolutions_about_z,
+            single_precision: self.single_precision_hits,
             revolution_test: self.revolution_test,
             framework_obj_reading: self.framework_obj_reading,
             single_precision_planes: self.single_precision_planes,

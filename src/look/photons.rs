@@ -14,7 +14,7 @@
 //! normal side only, and visible points gather them from their first hit
 //! (direct light too: no light sample).
 
-use super::{Integrator, Look, Miss, OutputCurve, PixelSampling, PointLights};
+use super::{Integrator, Look, Miss, OutputCurve, PixelSampling, PointLights, RayOrigins};
 use crate::geometry::RevolutionTest;
 use crate::scene::model::FovAxis;
 
@@ -130,6 +130,11 @@ impl Look {
         integrator: Integrator::Sppm,
         max_depth: 20,
         photons: Some(ALIEZLO),
+        // The photon passes use f64 shapes (W-Solaris's single-precision
+        // tests are its path tracer's look alone).
+        ray_origins: RayOrigins::AtHit,
+        single_precision_hits: false,
+        diffuse_about_modelled_normal: false,
         ..Look::WSO
     };
 

@@ -27,6 +27,8 @@ impl Look {
         pixels: PixelSampling::Tent,
         one_sided_planes: false,
         planes_accept_zero: false,
+        single_precision_hits: false,
+        diffuse_about_modelled_normal: false,
         texture_times_color: false,
         texture_rows: TextureRows::Up,
         fov_axis: None,
@@ -150,7 +152,7 @@ impl Look {
         name: "wso",
         renderer: "W-Solaris/computer-graphics (the D3 family's path tracer)",
         integrator: Integrator::Original,
-        ray_origins: RayOrigins::AtHit,
+        ray_origins: RayOrigins::AtHitSinglePrecision,
         lens_shape: Some(LensShape::Square),
         max_depth: 14,
         miss: Miss::Unweighted,
@@ -159,6 +161,11 @@ impl Look {
         one_sided_planes: true,
         // `W-Solaris/computer-graphics:include/plane.hpp:29` (looks.md).
         planes_accept_zero: true,
+        // It computes in `float`: `include/sphere.hpp`, `plane.hpp`,
+        // `triangle.hpp` and `src/main.cpp:73` (the next ray's origin).
+        single_precision_hits: true,
+        // `src/main.cpp:82-88`: the cosine lobe about the hit's normal.
+        diffuse_about_modelled_normal: true,
         ..Look::ORIGINAL
     };
 
@@ -217,7 +224,7 @@ impl Look {
         name: "yjx",
         renderer: "yangjunx21/jt_lighting",
         integrator: Integrator::Original,
-        ray_origins: RayOrigins::AtHitSingle,
+        ray_origins: RayOrigins::AtHitSinglePrecision,
         single_precision_planes: true,
         roulette: Roulette::SignedUniform,
         // One Mersenne Twister for every draw (`src/main.cpp`).
@@ -310,6 +317,11 @@ impl Look {
         name: "alz-pt",
         renderer: "aliezlo/dzy_gxgz_my (pt)",
         max_depth: 19,
+        // W-Solaris's single precision is not measured against aliezlo's
+        // renders (none is of `pt`): its images stay as they were.
+        ray_origins: RayOrigins::AtHit,
+        single_precision_hits: false,
+        diffuse_about_modelled_normal: false,
         ..Look::WSO
     };
 

@@ -7,7 +7,7 @@ use super::{Primitive, ShapeRules};
 use crate::geometry::MeshData;
 use crate::geometry::{
     Disk, Mesh, Plane, Rectangle, Revolution, RevolutionTest, SeededRevolution, Shape, Sphere,
-    Transform, Triangle,
+    SphereTest, Transform, Triangle,
 };
 use crate::math::Matrix;
 use crate::scene::model::Object;
@@ -27,7 +27,8 @@ fn swap_y_z() -> Transform {
 #[derive(Default)]
 pub(super) struct Builder {
     pub(super) primitives: Vec<Primitive>,
-    /// The look's rules for planes, spheres and surfaces of revolution.
+    /// The look's rules for planes, spheres, triangles and surfaces of
+    /// revolution.
     pub(super) rules: ShapeRules,
     /// One geometry mesh per distinct `MeshData` allocation.
     meshes: HashMap<*const MeshData, Arc<Mesh>>,
@@ -80,18 +81,27 @@ impl Builder {
                 ..
             } => (*radius != 0.0 && radius.is_finite()).then(|| {
                 let mut sphere = Sphere::new(*center, *radius, *motion);
-                sphere.test = self.rules.sphere_test;
+                sphere.test = if self.rules.single_precision {
+                    SphereTest::SinglePrecision
+                } else {
+                    self.rules.sphere_test
+                };
                 Shape::Sphere(sphere)
             }),
             Object::Plane { normal, offset, .. } => {
                 Plane::new(*normal, *offset).map(|mut plane| {
                     plane.one_sided = self.rules.one_sided_planes;
                     plane.accepts_zero = self.rules.planes_accept_zero;
-                    plane.single_precision = self.rules.single_precision_planes;
+                    plane.single_precision = self.rules.single_precision;
+                    plane.single_precision_two_sided = self.rules.single_precision_planes;
                     Shape::Plane(plane)
                 })
             }
-            Object::Triangle { vertices, .. } => Some(Shape::Triangle(Triangle::new(*vertices))),
+            Object::Triangle { vertices, .. } => {
+                let mut triangle = Triangle::new(*vertices);
+                triangle.single_precision = self.rules.single_precision;
+                Some(Shape::Triangle(triangle))
+            }
             Object::Rectangle {
                 origin,
                 edge_u,
@@ -105,13 +115,14 @@ impl Builder {
                 ..
             } => Disk::new(*center, *normal, *radius).map(Shape::Disk),
             Object::Mesh { mesh, smooth, .. } => {
+                let single_precision = self.rules.single_precision;
                 if let Some(framework) = self.framework_reading(mesh) {
                     let key = Arc::as_ptr(framework);
-                    let shared = Arc::clone(
-                        self.meshes
-                            .entry(key)
-                            .or_insert_with(|| Arc::new(Mesh::new(Arc::clone(framework)))),
-                    );
+                    let shared = Arc::clone(self.meshes.entry(key).or_insert_with(|| {
+                        let mut built = Mesh::new(Arc::clone(framework));
+                        built.single_precision = single_precision;
+                        Arc::new(built)
+                    }));
                     return self.push(
                         object,
                         Shape::Mesh {
@@ -126,11 +137,13 @@ impl Builder {
                 let smooth_somewhere = self.smooth.contains(&key);
                 let shared = self.meshes.entry(key).or_insert_with(|| {
                     let data = Arc::clone(mesh);
-                    Arc::new(if smooth_somewhere {
+                    let mut built = if smooth_somewhere {
                         Mesh::with_smooth_normals(data)
                     } else {
                         Mesh::new(data)
-                    })
+                    };
+                    built.single_precision = single_precision;
+                    Arc::new(built)
                 });
                 Some(Shape::Mesh {
                     mesh: Arc::clone(shared),

@@ -92,6 +92,11 @@ pub struct ShapeRules {
     /// Surfaces of revolution turn their profile's (x, y) about the **z**
     /// axis, the profile's y becoming z (jefflyy's), instead of about y.
     pub revolutions_about_z: bool,
+    /// Spheres, planes and triangles (meshes' too) are tested by
+    /// W-Solaris's tests in single precision
+    /// ([`crate::geometry::single_precision`]), whatever `sphere_test` and
+    /// the plane rules say.
+    pub single_precision: bool,
     pub revolution_test: RevolutionTest,
     /// Meshes are made of their OBJ file's framework reading, when it has
     /// one (see `MeshData::framework_reading`).

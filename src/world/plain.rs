@@ -13,7 +13,8 @@ use crate::math::Ray;
 #[derive(Clone, Debug, Default)]
 pub struct PlainShapes {
     planes: Vec<(Plane, u32)>,
-    /// Planes met in single precision (a look's), by their own `intersect`.
+    /// Planes of W-Solaris's and yangjunx21's single-precision tests, by
+    /// their own `intersect`.
     other_planes: Vec<(Plane, u32)>,
     /// Spheres of the robust test.
     spheres: Vec<(Sphere, u32)>,
@@ -27,7 +28,7 @@ pub struct PlainShapes {
 
 impl PlainShapes {
     pub fn push_plane(&mut self, plane: Plane, primitive: usize) {
-        if plane.single_precision {
+        if plane.single_precision || plane.single_precision_two_sided {
             self.other_planes.push((plane, primitive as u32));
         } else {
             self.planes.push((plane, primitive as u32));
@@ -51,8 +52,8 @@ impl PlainShapes {
 
     /// Lowers `limit` to the nearest hit in `(t_min, limit)` and records it
     /// (primitive index, intersection) in `best`: the planes, then the
-    /// other planes, the other spheres, then the robust spheres, each shape taking the hit
-    /// only when strictly nearer.
+    /// other planes and spheres, then the robust spheres, each shape taking
+    /// the hit only when strictly nearer.
     #[inline]
     pub fn nearest(
         &self,
@@ -108,6 +109,10 @@ impl PlainShapes {
                 .other_spheres
                 .iter()
                 .any(|(sphere, _)| sphere.intersect(ray, t_min, t_max).is_some())
+            || self
+                .other_planes
+                .iter()
+                .any(|(plane, _)| plane.intersect(ray, t_min, t_max).is_some())
     }
 }
 

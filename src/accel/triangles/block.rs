@@ -4,6 +4,7 @@
 
 use bytemuck::{Pod, Zeroable};
 
+use crate::geometry::single_precision;
 use crate::math::{Point3, Ray};
 use wide::f64x4;
 
@@ -159,5 +160,37 @@ pub(super) fn test(rows: &[[f64; LANES]; 9], ray: &Ray, t_min: f64, t_max: f64) 
         t: t.to_array(),
         b1: b1.to_array(),
         b2: b2.to_array(),
+    }
+}
+
+/// [`test`] by W-Solaris's test in single precision
+/// (`geometry::single_precision::triangle`), lane by lane; unused lanes
+/// (zero triangles) are never hit.
+#[inline(always)]
+pub(super) fn test_single_precision(
+    rows: &[[f64; LANES]; 9],
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+) -> LaneHits {
+    let answers: [Option<(f64, f64, f64)>; LANES] = std::array::from_fn(|lane| {
+        let vertices: [Point3; 3] = std::array::from_fn(|v| {
+            Point3::new(
+                rows[3 * v][lane],
+                rows[3 * v + 1][lane],
+                rows[3 * v + 2][lane],
+            )
+        });
+        single_precision::triangle(&vertices, ray, t_min, t_max)
+    });
+    let part = |k: usize| answers.map(|a| a.map_or(0.0, |h| [h.0, h.1, h.2][k]));
+    LaneHits {
+        mask: answers
+            .iter()
+            .enumerate()
+            .fold(0, |mask, (lane, a)| mask | (u32::from(a.is_some()) << lane)),
+        t: part(0),
+        b1: part(1),
+        b2: part(2),
     }
 }

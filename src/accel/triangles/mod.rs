@@ -17,7 +17,7 @@ mod block;
 use super::Bvh;
 use super::huge_pages::HugeArray;
 use crate::math::{Aabb, Point3, Ray};
-use block::{Block, Block32, Block64, LANES, Lanes, test};
+use block::{Block, Block32, Block64, LANES, LaneHits, Lanes, test, test_single_precision};
 
 /// SAH cost of testing one block, in node visits.
 const BLOCK_COST: f64 = 1.0;
@@ -149,16 +149,46 @@ impl LeafTriangles {
     /// The nearest triangle with `t_min < t < t_max`.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<TriangleHit> {
         match &self.blocks {
-            Blocks::Single(blocks) => nearest(&self.bvh, blocks, ray, t_min, t_max),
-            Blocks::Double(blocks) => nearest(&self.bvh, blocks, ray, t_min, t_max),
+            Blocks::Single(blocks) => nearest(&self.bvh, blocks, ray, t_min, t_max, test),
+            Blocks::Double(blocks) => nearest(&self.bvh, blocks, ray, t_min, t_max, test),
         }
     }
 
     /// Whether any triangle lies on the ray with `t_min < t < t_max`.
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         match &self.blocks {
-            Blocks::Single(blocks) => any(&self.bvh, blocks, ray, t_min, t_max),
-            Blocks::Double(blocks) => any(&self.bvh, blocks, ray, t_min, t_max),
+            Blocks::Single(blocks) => any(&self.bvh, blocks, ray, t_min, t_max, test),
+            Blocks::Double(blocks) => any(&self.bvh, blocks, ray, t_min, t_max, test),
+        }
+    }
+
+    /// [`LeafTriangles::intersect`] by W-Solaris's test in single precision
+    /// (`geometry::single_precision::triangle`).
+    pub fn intersect_single_precision(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<TriangleHit> {
+        match &self.blocks {
+            Blocks::Single(blocks) => {
+                nearest(&self.bvh, blocks, ray, t_min, t_max, test_single_precision)
+            }
+            Blocks::Double(blocks) => {
+                nearest(&self.bvh, blocks, ray, t_min, t_max, test_single_precision)
+            }
+        }
+    }
+
+    /// [`LeafTriangles::occluded`] by W-Solaris's test in single precision.
+    pub fn occluded_single_precision(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        match &self.blocks {
+            Blocks::Single(blocks) => {
+                any(&self.bvh, blocks, ray, t_min, t_max, test_single_precision)
+            }
+            Blocks::Double(blocks) => {
+                any(&self.bvh, blocks, ray, t_min, t_max, test_single_precision)
+            }
         }
     }
 }
@@ -176,6 +206,7 @@ fn nearest<B: Block>(
     ray: &Ray,
     t_min: f64,
     t_max: f64,
+    test: impl Fn(&[[f64; LANES]; 9], &Ray, f64, f64) -> LaneHits,
 ) -> Option<TriangleHit> {
     let mut best = None;
     let leaf = |first: usize, count: usize, mut t_max: f64| {
@@ -211,7 +242,14 @@ fn nearest<B: Block>(
 }
 
 #[inline(always)]
-fn any<B: Block>(bvh: &Bvh, blocks: &[B], ray: &Ray, t_min: f64, t_max: f64) -> bool {
+fn any<B: Block>(
+    bvh: &Bvh,
+    blocks: &[B],
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+    test: impl Fn(&[[f64; LANES]; 9], &Ray, f64, f64) -> LaneHits,
+) -> bool {
     let leaf = |first: usize, count: usize| {
         leaf_blocks(first, count).any(|b| test(&blocks[b].coords(), ray, t_min, t_max).mask != 0)
     };

@@ -169,3 +169,45 @@ fn block_lanes_equal_the_scalar_test_bit_for_bit() {
     }
     assert!(hits > 1000, "{hits} hits");
 }
+
+/// The tree's nearest and any hit by W-Solaris's single-precision test
+/// equal that test's on every triangle, bit for bit.
+#[test]
+fn single_precision_queries_equal_brute_force() {
+    use crate::geometry::single_precision;
+    let mut rng = Rng::new(51, 52);
+    let mut list = triangles(&mut rng);
+    for t in list.iter_mut().flatten() {
+        *t = t.map(|p| p.map(|c| c as f32 as f64));
+    }
+    let tree = LeafTriangles::build(list.len(), |i| list[i]);
+    let valid: Vec<[Point3; 3]> = list.iter().flatten().copied().collect();
+    let mut hits = 0;
+    for k in 0..3000 {
+        let t = valid[(rng.next_f64() * valid.len() as f64) as usize];
+        let target = if k % 2 == 0 {
+            t[0] + (t[1] - t[0]) * rng.next_f64()
+        } else {
+            Point3::new(rng.next_f64(), rng.next_f64(), 0.02)
+        };
+        let origin = Point3::new(rng.next_f64() * 3.0 - 1.0, rng.next_f64() * 3.0 - 1.0, 1.5);
+        let ray = Ray::new(origin, (target - origin).normalize(), 0.0);
+        let brute = valid
+            .iter()
+            .filter_map(|v| single_precision::triangle(v, &ray, 0.0, f64::INFINITY))
+            .map(|h| h.0)
+            .min_by(f64::total_cmp);
+        let found = tree.intersect_single_precision(&ray, 0.0, f64::INFINITY);
+        assert_eq!(
+            found.map(|h| h.t.to_bits()),
+            brute.map(f64::to_bits),
+            "{ray:?}"
+        );
+        assert_eq!(
+            tree.occluded_single_precision(&ray, 0.0, f64::INFINITY),
+            brute.is_some()
+        );
+        hits += usize::from(found.is_some());
+    }
+    assert!(hits > 1500, "{hits} hits");
+}
