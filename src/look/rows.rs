@@ -3,10 +3,11 @@
 
 use super::{
     DispersionSensor, Integrator, LobeChoice, Look, Miss, OutputCurve, PixelSampling, PointLights,
-    RayOrigins, TextureFrames, TextureRows,
+    RayOrigins, Roulette, TextureFrames, TextureRows,
 };
 use crate::bsdf::DielectricFresnel;
 use crate::geometry::{RevolutionTest, SphereTest};
+use crate::sampler::SamplerKind;
 use crate::scene::model::{FovAxis, LensShape};
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -46,6 +47,9 @@ impl Look {
         every_hit_enters: false,
         framework_obj_reading: false,
         normals_as_stored: false,
+        single_precision_planes: false,
+        roulette: Roulette::Never,
+        sampler: SamplerKind::Sobol,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -212,10 +216,20 @@ impl Look {
     /// yangjunx21/jt_lighting: smallpt's recursion with its misses black,
     /// emitters that end the path, lobes by exact weights (everything not
     /// wholly diffuse or wholly mirror is glass of index 1.5), and its
-    /// output `clamp(c)^(1/2.2)` rounded to the nearest byte.
+    /// output `clamp(c)^(1/2.2)` rounded to the nearest byte. Its `float`
+    /// planes and rays leaving from the hit itself with `tmin` 0, its
+    /// roulette and its single random generator (`src/main.cpp`,
+    /// `include/plane.hpp`): its few-sample pixels are clamped averages, so
+    /// their noise is part of the image and the estimator is its own.
     pub const YJX: Look = Look {
         name: "yjx",
         renderer: "yangjunx21/jt_lighting",
+        integrator: Integrator::Original,
+        ray_origins: RayOrigins::AtHitSinglePrecision,
+        single_precision_planes: true,
+        roulette: Roulette::SignedUniform,
+        // One Mersenne Twister for every draw (`src/main.cpp`).
+        sampler: SamplerKind::Independent,
         max_depth: UNLIMITED,
         miss: Miss::Black,
         point_lights: PointLights::Never,

@@ -96,6 +96,7 @@ impl Builder {
                     if self.rules.cav_plane_frames {
                         plane = plane.with_cav_frame();
                     }
+                    plane.single_precision_two_sided = self.rules.single_precision_planes;
                     Shape::Plane(plane)
                 })
             }
