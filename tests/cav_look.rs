@@ -107,3 +107,94 @@ fn cav_finds_its_lights_by_the_bounce_alone() {
         "cav {cav}, with light samples {sampled}"
     );
 }
+
+/// A 2x1 image, black then white, written to a fresh folder.
+fn black_then_white(name: &str) -> std::path::PathBuf {
+    use pathtracer::color::Color;
+    use pathtracer::image_io::{Image, write_image};
+    let dir = common::fresh_dir(&format!("cav-texture-{name}"));
+    let path = dir.join("black-white.png");
+    let image = Image {
+        width: 2,
+        height: 1,
+        pixels: vec![Color::BLACK, Color::WHITE],
+    };
+    write_image(&path, &image, None).expect("writes");
+    path
+}
+
+/// The camera 5 above a textured plane z = 0 under a white sky, seeing
+/// x and y in [-1, 1]: a pixel is its texel (one bounce to the sky).
+fn textured_floor(texture: &std::path::Path, scale: &str) -> String {
+    format!(
+        "PerspectiveCamera {{ center 0 0 5 direction 0 0 -1 up 0 1 0 angle 22.619865 \
+         width 8 height 8 focus 0 field 0 }}\nBackground {{ color 1 1 1 }}\n\
+         Materials {{ numMaterials 1 Material {{ diffuseColor 1 1 1 luminance 0 0 0 \
+         texture {} {scale} }} }}\n\
+         Group {{ numObjects 1 MaterialIndex 0 Plane {{ normal 0 0 1 offset 0 }} }}",
+        texture.display()
+    )
+}
+
+/// The mean of the columns `columns` of `image`.
+fn columns_mean(image: &pathtracer::image_io::Image, columns: std::ops::Range<usize>) -> f64 {
+    let mut sum = 0.0;
+    let mut n = 0;
+    for (i, p) in image.pixels.iter().enumerate() {
+        if columns.contains(&(i % image.width)) {
+            sum += p.g;
+            n += 1;
+        }
+    }
+    sum / n as f64
+}
+
+#[test]
+fn cav_scales_texture_coordinates_by_texture_scale_and_wraps_them() {
+    // cav's frame on the plane z = 0 has u = x: times 0.1 and wrapped, x
+    // in [-1, 0) reads 0.9 to 1 (the white texel) and [0, 1) reads 0 to 0.1
+    // (the black one). Without the scale the image would repeat every
+    // world unit, and our own tiling (10 texels a unit) makes stripes 0.1
+    // wide: grey pixels.
+    let texture = black_then_white("scale");
+    let image = render_text(
+        "texture-scale",
+        &textured_floor(&texture, "textureScale 0.1"),
+        Look::CAV,
+        4,
+    );
+    let (left, right) = (columns_mean(&image, 0..3), columns_mean(&image, 5..8));
+    assert!(left > 0.95 && right < 0.05, "left {left}, right {right}");
+    let ours = Look {
+        texture_frames: pathtracer::look::TextureFrames::Shapes,
+        ..Look::CAV
+    };
+    let image = render_text(
+        "texture-scale",
+        &textured_floor(&texture, "textureScale 0.1"),
+        ours,
+        4,
+    );
+    let (left, right) = (columns_mean(&image, 0..3), columns_mean(&image, 5..8));
+    assert!(
+        left < 0.8 && right > 0.2,
+        "ours: left {left}, right {right}"
+    );
+    std::fs::remove_dir_all(texture.parent().expect("a folder")).ok();
+}
+
+#[test]
+fn cav_divides_a_texel_byte_by_256() {
+    // The white texel, 255, reads 255/256 (not 1); under the white sky one
+    // bounce returns it exactly.
+    let texture = black_then_white("bytes");
+    let image = render_text(
+        "texel-bytes",
+        &textured_floor(&texture, "textureScale 0.1"),
+        Look::CAV,
+        2,
+    );
+    let white = image.pixels[0].g;
+    assert!((white - 255.0 / 256.0).abs() < 1e-6, "{white}");
+    std::fs::remove_dir_all(texture.parent().expect("a folder")).ok();
+}

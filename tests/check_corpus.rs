@@ -95,7 +95,6 @@ fn content_facts() {
 /// Fields that are read and not rendered: each must warn at its own line
 /// (the rule that nothing a scene says is dropped silently).
 const NOT_RENDERED: &[&str] = &[
-    "textureScale",
     "textureLuminance",
     "opacity",
     "transparency",

@@ -161,7 +161,7 @@ pub fn run(args: &LookalikeArgs) -> Result<(), String> {
         settings: format!(
             "integrator {}, sampler {}, look {}, max depth {}, seed {}",
             sampling.integrator.map_or("the look's", |i| i.name()),
-            sampling.sampler.name(),
+            sampling.sampler.map_or("the look's", |s| s.name()),
             sampling.look.map_or("detected per scene", |l| l.name),
             sampling
                 .max_depth

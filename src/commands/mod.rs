@@ -110,10 +110,12 @@ pub struct SamplingOptions {
     /// Image height, overriding the scene's camera.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
     pub height: Option<u32>,
-    /// Sample values: `sobol` (Owen-scrambled Sobol', the default) or
-    /// `independent` (one random generator per pixel sample).
-    #[arg(long, default_value = "sobol", value_parser = parse_sampler)]
-    pub sampler: SamplerKind,
+    /// Sample values: `sobol` (Owen-scrambled Sobol') or `independent` (one
+    /// random generator per pixel sample). Default: the look's (`sobol`;
+    /// `independent` for `yjx`, whose clamped pixels depend on the noise
+    /// of independent samples)
+    #[arg(long, value_parser = parse_sampler)]
+    pub sampler: Option<SamplerKind>,
     /// Estimator: `path` (next-event estimation with MIS), `original` (the
     /// original renderer's estimator, the same expected image), `raycast`
     /// (the course framework's ray casting) or `sppm` (stochastic
@@ -234,7 +236,7 @@ impl SamplingOptions {
             threads: self.threads.map(|t| t as usize),
             integrator,
             max_depth: self.max_depth.unwrap_or(look.max_depth),
-            sampler: self.sampler,
+            sampler: self.sampler.unwrap_or(look.sampler),
             progress,
             progress_every: self.progress_every,
             clamp: self.clamp,

@@ -27,6 +27,9 @@ pub struct Plane {
     /// ([`single_precision::plane`]: one-sided, and hit at `t_min` too,
     /// whatever `one_sided` and `accepts_zero` say).
     pub single_precision: bool,
+    /// Tested by yangjunx21's test in single precision
+    /// ([`single_precision::plane_two_sided`]: from either side).
+    pub single_precision_two_sided: bool,
 }
 
 impl Plane {
@@ -44,13 +47,34 @@ impl Plane {
             one_sided: false,
             accepts_zero: false,
             single_precision: false,
+            single_precision_two_sided: false,
         })
     }
 
+    /// The plane with cav's uv frame (`CaveSpiderLZJ/PathTracingFinal:include/plane.hpp`):
+    /// `w1 = normalize(a x n)`, `a` the y axis when `n.x > 0.1` and the x
+    /// axis otherwise, `w2 = n x w1`, and (u, v) = (p . w2, p . w1). A
+    /// normal along -x, where cav's `w1` is not a number, keeps ours.
+    pub fn with_cav_frame(mut self) -> Plane {
+        let n = self.normal;
+        let a = if n.x > 0.1 { Vec3::y() } else { Vec3::x() };
+        if let Some(w1) = a.cross(&n).try_normalize(1e-12) {
+            self.frame = (n.cross(&w1), w1);
+        }
+        self
+    }
+
+    /// The hit with `t_min < t < t_max`, or by W-Solaris's or yangjunx21's
+    /// test in single precision when the plane has one.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
         if self.single_precision {
             let t = single_precision::plane(&self.normal, self.offset, ray, t_min, t_max)?;
+            return Some(Intersection::new(t, 0.0, 0.0));
+        }
+        if self.single_precision_two_sided {
+            let t =
+                single_precision::plane_two_sided(&self.normal, self.offset, ray, t_min, t_max)?;
             return Some(Intersection::new(t, 0.0, 0.0));
         }
         let denominator = self.normal.dot(&ray.direction);
@@ -105,6 +129,22 @@ mod tests {
         // Leaving along the normal, a one-sided plane is not met at all.
         let up = Ray::new(down.origin, Vec3::y(), 0.0);
         assert!(plane.intersect(&up, 0.0, f64::INFINITY).is_none());
+    }
+
+    #[test]
+    fn a_single_precision_plane_is_met_again_from_a_point_rounded_behind_it() {
+        // yangjunx21's ceiling: y = 81.6 seen from below (normal 0 -1 0).
+        let mut plane = Plane::new(-Vec3::y(), -81.6).unwrap();
+        plane.single_precision_two_sided = true;
+        let direction = Vec3::new(0.22425672220619774, 1.0, -0.1953505739617607);
+        let up = Ray::new(Point3::new(50.0, 20.0, 290.6), direction.normalize(), 0.0);
+        let hit = plane.intersect(&up, 0.0, f64::INFINITY).unwrap();
+        let at = single_precision::point_at(&up, hit.t);
+        // This ray's hit rounds to above the ceiling in single precision.
+        assert!(at.y > f64::from(81.6f32), "{}", at.y);
+        let down = Ray::new(at, Vec3::new(0.3, -1.0, 0.2).normalize(), 0.0);
+        let again = plane.intersect(&down, 0.0, f64::INFINITY).unwrap();
+        assert!(again.t > 0.0 && again.t < 1e-4, "{}", again.t);
     }
 
     #[test]

@@ -96,6 +96,28 @@ pub fn plane(normal: &Vec3, offset: f64, ray: &Ray, t_min: f64, t_max: f64) -> O
     (t >= t_min && t < t_max).then_some(t)
 }
 
+/// The distance to a plane `normal . p = offset` (`normal` unit) by
+/// yangjunx21's test: `-(n . o - offset) / (n . d)` in single precision,
+/// from either side, strictly beyond `t_min` (theirs: 0). A ray leaving
+/// from a point that rounded to the far side of the plane meets it again
+/// at a tiny distance, from behind.
+#[inline]
+pub fn plane_two_sided(
+    normal: &Vec3,
+    offset: f64,
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+) -> Option<f64> {
+    let normal = single(normal);
+    let denominator = dot(normal, single(&ray.direction));
+    if denominator == 0.0 {
+        return None;
+    }
+    let t = f64::from(-(dot(normal, single(&ray.origin)) - offset as f32) / denominator);
+    (t > t_min && t < t_max).then_some(t)
+}
+
 /// W-Solaris's Möller–Trumbore: `(t, b1, b2)` for the hit at
 /// `(1 - b1 - b2) p0 + b1 p1 + b2 p2`, `None` when the determinant is below
 /// f32's epsilon in size, the hit is outside the triangle or `t` is not in

@@ -23,6 +23,7 @@
 use crate::bsdf::DielectricFresnel;
 use crate::bsdf::LookLobes;
 use crate::geometry::{RevolutionTest, SphereTest};
+use crate::sampler::SamplerKind;
 use crate::scene::model::{CameraDesc, FovAxis, LensShape, Scene};
 use crate::world::ShapeRules;
 
@@ -63,8 +64,22 @@ pub enum RayOrigins {
     AtHit,
     /// At the hit point computed in single precision, `origin + direction
     /// t` in f32 (W-Solaris's, with its single-precision tests: see
-    /// [`Look::single_precision_hits`]).
+    /// [`Look::single_precision_hits`]; yangjunx21's, with its
+    /// single-precision planes: see [`Look::single_precision_planes`]).
     AtHitSinglePrecision,
+}
+
+/// How the original integrator ends paths by chance.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Roulette {
+    /// Never: paths end at the look's depth.
+    Never,
+    /// yangjunx21's, from the 6th hit on: a path goes on when a uniform
+    /// draw from [-1, 1] is below `p`, the largest channel of the hit's
+    /// colour, and its throughput is then divided by `p`. It goes on with
+    /// probability (1 + p) / 2, not `p`, so each such hit brightens the
+    /// expected image by (1 + p) / (2 p).
+    SignedUniform,
 }
 
 /// What a ray that hits nothing brings back.
@@ -130,6 +145,10 @@ pub enum TextureFrames {
     /// Cambrian's: sphere longitudes from -z and rectangles that cut the
     /// image instead of stretching it (see [`crate::render_scene::texture_frames`]).
     Cambrian,
+    /// cav's: planes take their uv frame from the normal as cav's do, and
+    /// a texel is read at the coordinates times the material's
+    /// `textureScale`, wrapped (see [`crate::shading::cav_texel`]).
+    Cav,
 }
 
 /// One look's conventions.
@@ -224,6 +243,17 @@ pub struct Look {
     /// Whether mesh triangles shade with their face normal, the file's
     /// `vn` unused (emily-jia's).
     pub face_normals: bool,
+    /// Whether planes are met in single precision (yangjunx21's `float`
+    /// vectors): with rays leaving from the hit itself
+    /// ([`RayOrigins::AtHitSinglePrecision`]), a bounce that rounded to the far side
+    /// of a wall meets it again, from behind, and leaves through it.
+    pub single_precision_planes: bool,
+    /// How paths end by chance in the original integrator.
+    pub roulette: Roulette,
+    /// The sample values (`--sampler` overrides it). A renderer that clamps
+    /// each pixel's average keeps less of a noisier pixel, so the noise of
+    /// its independent draws is part of its image.
+    pub sampler: SamplerKind,
 }
 
 impl Look {
@@ -250,6 +280,8 @@ impl Look {
             revolution_test: self.revolution_test,
             framework_obj_reading: self.framework_obj_reading,
             face_normals: self.face_normals,
+            cav_plane_frames: self.texture_frames == TextureFrames::Cav,
+            single_precision_planes: self.single_precision_planes,
         }
     }
 

@@ -3,10 +3,11 @@
 
 use super::{
     DispersionSensor, Integrator, LobeChoice, Look, Miss, MtlReading, OutputCurve, PixelSampling,
-    PointLights, RayOrigins, TextureFrames, TextureRows,
+    PointLights, RayOrigins, Roulette, TextureFrames, TextureRows,
 };
 use crate::bsdf::DielectricFresnel;
 use crate::geometry::{RevolutionTest, SphereTest};
+use crate::sampler::SamplerKind;
 use crate::scene::model::{FovAxis, LensShape};
 
 /// Scattering vertices that stand for "no limit": Russian roulette ends
@@ -48,6 +49,9 @@ impl Look {
         normals_as_stored: false,
         mtl_reading: MtlReading::Ignored,
         face_normals: false,
+        single_precision_planes: false,
+        roulette: Roulette::Never,
+        sampler: SamplerKind::Sobol,
     };
 
     pub const PHYSICAL: Look = Look {
@@ -134,6 +138,7 @@ impl Look {
         // (`CaveSpiderLZJ/PathTracingFinal:include/sphere.hpp`, `triangle.hpp`).
         every_hit_enters: true,
         sphere_test: SphereTest::Cav,
+        texture_frames: TextureFrames::Cav,
         ..Look::ORIGINAL
     };
 
@@ -218,10 +223,20 @@ impl Look {
     /// yangjunx21/jt_lighting: smallpt's recursion with its misses black,
     /// emitters that end the path, lobes by exact weights (everything not
     /// wholly diffuse or wholly mirror is glass of index 1.5), and its
-    /// output `clamp(c)^(1/2.2)` rounded to the nearest byte.
+    /// output `clamp(c)^(1/2.2)` rounded to the nearest byte. Its `float`
+    /// planes and rays leaving from the hit itself with `tmin` 0, its
+    /// roulette and its single random generator (`src/main.cpp`,
+    /// `include/plane.hpp`): its few-sample pixels are clamped averages, so
+    /// their noise is part of the image and the estimator is its own.
     pub const YJX: Look = Look {
         name: "yjx",
         renderer: "yangjunx21/jt_lighting",
+        integrator: Integrator::Original,
+        ray_origins: RayOrigins::AtHitSinglePrecision,
+        single_precision_planes: true,
+        roulette: Roulette::SignedUniform,
+        // One Mersenne Twister for every draw (`src/main.cpp`).
+        sampler: SamplerKind::Independent,
         max_depth: UNLIMITED,
         miss: Miss::Black,
         point_lights: PointLights::Never,

@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use super::lobes::lobe_set;
-use crate::look::Look;
+use crate::look::{Look, TextureFrames};
 use crate::scene::model::{Material, Scene};
 use crate::shading::{ColorSource, RenderMaterial, SurfaceColor};
 use crate::texture::Texture;
@@ -28,6 +28,12 @@ fn render_material(material: &Material, textures: &[Arc<Texture>], look: Look) -
     let image = |index: Option<usize>| index.and_then(|i| textures.get(i)).cloned();
     let source = match (&material.checker, image(material.texture)) {
         (Some(checker), _) => ColorSource::Checker(*checker),
+        (None, Some(image)) if look.texture_frames == TextureFrames::Cav => {
+            ColorSource::CavTexture {
+                image,
+                scale: material.texture_scale,
+            }
+        }
         (None, Some(image)) => ColorSource::Texture {
             image,
             rule: material.uv_rule,

@@ -60,6 +60,12 @@ pub enum ColorSource {
         image: Arc<Texture>,
         rule: Option<UvRule>,
     },
+    /// An image read as cav's renderer reads it (see [`super::cav_texel`]),
+    /// its coordinates times `scale` (the material's `textureScale`).
+    CavTexture {
+        image: Arc<Texture>,
+        scale: f64,
+    },
 }
 
 impl SurfaceColor {
@@ -70,6 +76,7 @@ impl SurfaceColor {
             ColorSource::Constant(color) => *color,
             ColorSource::Checker(checker) => checker.color_at(&hit.point),
             ColorSource::Texture { image, rule: None } => surface_maps::texel_at(image, hit),
+            ColorSource::CavTexture { image, scale } => super::cav_texel(image, hit, *scale),
             ColorSource::Texture {
                 image,
                 rule: Some(rule),

@@ -2,9 +2,11 @@
 //! (see [`SurfaceColor`]), and normals (interpolated, normal- and
 //! bump-mapped, see `surface_maps`) oriented towards the incoming ray.
 
+mod cav_texel;
 mod material;
 pub mod surface_maps;
 
+pub use cav_texel::cav_texel;
 pub use material::{ColorSource, RenderMaterial, SurfaceColor};
 
 use crate::bsdf::{Bsdf, Rules};

@@ -93,6 +93,10 @@ impl Builder {
                     plane.one_sided = self.rules.one_sided_planes;
                     plane.accepts_zero = self.rules.planes_accept_zero;
                     plane.single_precision = self.rules.single_precision;
+                    if self.rules.cav_plane_frames {
+                        plane = plane.with_cav_frame();
+                    }
+                    plane.single_precision_two_sided = self.rules.single_precision_planes;
                     Shape::Plane(plane)
                 })
             }

@@ -104,6 +104,10 @@ pub struct ShapeRules {
     /// Mesh triangles shade with their face normal, the file's `vn` and
     /// `smooth` unused.
     pub face_normals: bool,
+    /// Planes take cav's uv frame (see [`crate::geometry::Plane::with_cav_frame`]).
+    pub cav_plane_frames: bool,
+    /// Planes are met in single precision (see `Plane::intersect`).
+    pub single_precision_planes: bool,
 }
 
 /// The box a linear primitive is culled by (see `World::linear_boxes`):

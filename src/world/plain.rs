@@ -13,8 +13,8 @@ use crate::math::Ray;
 #[derive(Clone, Debug, Default)]
 pub struct PlainShapes {
     planes: Vec<(Plane, u32)>,
-    /// Planes of W-Solaris's single-precision test, by their own
-    /// `intersect`.
+    /// Planes of W-Solaris's and yangjunx21's single-precision tests, by
+    /// their own `intersect`.
     other_planes: Vec<(Plane, u32)>,
     /// Spheres of the robust test.
     spheres: Vec<(Sphere, u32)>,
@@ -28,7 +28,7 @@ pub struct PlainShapes {
 
 impl PlainShapes {
     pub fn push_plane(&mut self, plane: Plane, primitive: usize) {
-        if plane.single_precision {
+        if plane.single_precision || plane.single_precision_two_sided {
             self.other_planes.push((plane, primitive as u32));
         } else {
             self.planes.push((plane, primitive as u32));
@@ -101,6 +101,10 @@ impl PlainShapes {
                 .plane_groups
                 .iter()
                 .any(|group| group.any(&lanes, t_min, t_max))
+            || self
+                .other_planes
+                .iter()
+                .any(|(plane, _)| plane.intersect(ray, t_min, t_max).is_some())
             || self
                 .other_spheres
                 .iter()

@@ -283,6 +283,9 @@ fn read_field(
                 )?;
             }
         }
+        "textureScale" if context.dialect == Dialect::Cav => {
+            f.texture_scale = Some(cursor.number(context, key)?)
+        }
         "textureScale" | "textureLuminance" => {
             cursor.take_numbers();
             context.not_rendered(location, key, "this texture convention is not implemented")?;

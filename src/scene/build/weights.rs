@@ -81,6 +81,7 @@ pub struct Fields {
     pub angular: Option<AngularWeights>,
     pub texture: Option<PathRef>,
     pub uv_rule: Option<UvRule>,
+    pub texture_scale: Option<f64>,
     pub surface_map: Option<SurfaceMapRef>,
 }
 
@@ -192,6 +193,7 @@ pub fn resolve(
         refract: weights[2],
         ior,
         uv_rule: f.uv_rule,
+        texture_scale: f.texture_scale.unwrap_or(1.0),
         ..Material::DEFAULT
     };
     add_lobes(context, &f, name, specular_is_emission, &mut material)?;

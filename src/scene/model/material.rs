@@ -32,6 +32,9 @@ pub struct Material {
     /// Where `texture` is read: afb's rules from the world point (`Func`);
     /// `None`: at the shape's uv.
     pub uv_rule: Option<UvRule>,
+    /// cav's `textureScale`: the factor of its texture coordinates before
+    /// they wrap (1 when not written; only the `cav` look reads it).
+    pub texture_scale: f64,
     /// A procedural colour at the world point (rub's `checkerTexture`),
     /// instead of `texture` and `color`.
     pub checker: Option<Checker>,
@@ -87,6 +90,7 @@ impl Material {
         ior: 1.5,
         texture: None,
         uv_rule: None,
+        texture_scale: 1.0,
         checker: None,
         normal_map: None,
         bump: None,
