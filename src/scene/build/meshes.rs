@@ -142,7 +142,8 @@ impl Meshes {
         };
         if let Some(choice) = overridden {
             let message = format!(
-                "mesh '{}': its .mtl materials are overridden by MaterialIndex {} (line {})",
+                "mesh '{}': its .mtl materials are overridden by MaterialIndex {} (line {}), \
+                 except in the emj look (emily-jia's loader lets them win)",
                 shown_path(path),
                 choice.index,
                 choice.location.line
