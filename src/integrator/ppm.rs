@@ -129,6 +129,9 @@ fn through_glass(at: &Shading, d: &Vec3, time: f64) -> Ray {
     Ray::new(at.point + direction * REFRACTED_OFFSET, direction, time)
 }
 
+/// How a branch's ray leaves a hit ([`through_glass`], [`mirrored`]).
+type Leave = fn(&Shading, &Vec3, f64) -> Ray;
+
 /// The mirror ray, from [`MIRROR_OFFSET`] along the surface's normal.
 fn mirrored(at: &Shading, d: &Vec3, time: f64) -> Ray {
     let origin = at.point + outward(at) * MIRROR_OFFSET;
@@ -173,29 +176,20 @@ pub fn camera_branch(
     }
     let weights = branches(at.material);
     let d = ray.direction;
-    if weights.glass > MIN_WEIGHT {
-        let next = through_glass(&at, &d, ray.time);
-        camera_branch(
-            scene,
-            &next,
-            energy * weights.glass,
-            depth + 1,
-            pixel,
-            seen,
-            points,
-        );
-    }
-    if weights.mirror > MIN_WEIGHT {
-        let next = mirrored(&at, &d, ray.time);
-        camera_branch(
-            scene,
-            &next,
-            energy * weights.mirror,
-            depth + 1,
-            pixel,
-            seen,
-            points,
-        );
+    let leaving: [(f64, Leave); 2] = [(weights.glass, through_glass), (weights.mirror, mirrored)];
+    for (weight, leave) in leaving {
+        if weight > MIN_WEIGHT {
+            let next = leave(&at, &d, ray.time);
+            camera_branch(
+                scene,
+                &next,
+                energy * weight,
+                depth + 1,
+                pixel,
+                seen,
+                points,
+            );
+        }
     }
     if weights.diffuse > MIN_WEIGHT {
         points.push(ViewPoint {

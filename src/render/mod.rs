@@ -8,6 +8,7 @@ pub mod debug_sample;
 pub mod film_file;
 pub mod job;
 pub mod photon_passes;
+mod photon_tasks;
 pub mod ppm_rounds;
 
 use std::ops::Range;

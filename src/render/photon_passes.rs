@@ -1,6 +1,6 @@
 //! The render driver of stochastic progressive photon mapping (see
 //! `integrator::sppm` for the method): the passes, each with its parallel
-//! loops (camera rays by rows, photons by tasks of `PHOTONS_PER_TASK`,
+//! loops (camera rays by rows, photons by `photon_tasks::trace_photons`,
 //! the pixels' update), progress, and stopping between passes on a signal.
 //! The only parallel code besides `render`.
 
@@ -14,6 +14,7 @@ use crate::look::PhotonMethod;
 use crate::math::Aabb;
 use crate::progress::Progress;
 use crate::render::converge::ConvergencePoint;
+use crate::render::photon_tasks::trace_photons;
 use crate::render::{RenderSettings, RenderStats, Stopped};
 use crate::render_scene::RenderScene;
 use crate::rng::mix64;
@@ -25,8 +26,6 @@ use crate::integrator::sppm::{PhotonSettings, options, photon, visible_point};
 
 /// Salt of the photons' seeds (apart from the camera rays').
 const PHOTON_SALT: u64 = 0x9807_0DA5_5E5D_1CE5;
-/// Photons one task traces (the unit of the photon pass's parallel work).
-const PHOTONS_PER_TASK: u64 = 1024;
 
 /// A photon-mapped render in progress.
 pub struct PhotonMapper<'a> {
@@ -179,41 +178,34 @@ impl<'a> PhotonMapper<'a> {
         let pixels = &self.pixels;
         let gathered = &self.gathered;
         let max_depth = scene.max_depth();
-        let photons = self.photons;
-        let tasks = photons.div_ceil(PHOTONS_PER_TASK);
-        pool.install(|| {
-            (0..tasks).into_par_iter().for_each(|task| {
-                let first = task * PHOTONS_PER_TASK;
-                let end = (first + PHOTONS_PER_TASK).min(photons);
-                for i in first..end {
-                    let mut sampler = Sampler::new(
-                        settings.sampler,
-                        pass as u64,
-                        i,
-                        settings.seed ^ PHOTON_SALT,
-                    );
-                    photon::trace(scene, &mut sampler, time, &mut |hit| {
-                        grid.candidates(&hit.point, |index| {
-                            let pixel = &pixels[index as usize];
-                            let Some(visible) = &pixel.visible else {
-                                return;
-                            };
-                            if visible.depth + 1 + hit.bounces > max_depth
-                                || (visible.point - hit.point).norm_squared()
-                                    > pixel.radius * pixel.radius
-                            {
-                                return;
-                            }
-                            let value = visible.reflectance(&hit.wi) * hit.power;
-                            if value.is_finite() {
-                                gathered.add(index as usize, value);
-                            }
-                        });
+        trace_photons(
+            pool,
+            settings,
+            pass as u64,
+            PHOTON_SALT,
+            self.photons,
+            progress,
+            |_, sampler| {
+                photon::trace(scene, sampler, time, &mut |hit| {
+                    grid.candidates(&hit.point, |index| {
+                        let pixel = &pixels[index as usize];
+                        let Some(visible) = &pixel.visible else {
+                            return;
+                        };
+                        if visible.depth + 1 + hit.bounces > max_depth
+                            || (visible.point - hit.point).norm_squared()
+                                > pixel.radius * pixel.radius
+                        {
+                            return;
+                        }
+                        let value = visible.reflectance(&hit.wi) * hit.power;
+                        if value.is_finite() {
+                            gathered.add(index as usize, value);
+                        }
                     });
-                }
-                progress.add(end - first);
-            });
-        });
+                });
+            },
+        );
         // 4. Radius and flux update.
         let alpha = self.photon_settings.alpha;
         let unit = scene.emitters().photon_power_unit();

@@ -23,10 +23,9 @@ use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
 use crate::scene::model::Light;
 
+use super::photon_tasks::trace_photons;
 use super::{RenderSettings, RenderStats, Stopped};
 
-/// Photons one task traces.
-const PHOTONS_PER_TASK: u64 = 1024;
 /// Salt of the photons' seeds.
 const PHOTON_SALT: u64 = 0x5A0_1A2D_9E37_11C5;
 
@@ -173,26 +172,20 @@ pub fn render(
                     radius,
                     gathered: &gathered,
                 };
-                let tasks = traced.div_ceil(PHOTONS_PER_TASK);
-                pool.install(|| {
-                    (0..tasks).into_par_iter().for_each(|task| {
-                        let first = task * PHOTONS_PER_TASK;
-                        let end = (first + PHOTONS_PER_TASK).min(traced);
-                        for i in first..end {
-                            let (position, color) = lights[(i / per_light) as usize];
-                            let mut sampler = Sampler::new(
-                                settings.sampler,
-                                round as u64,
-                                i,
-                                settings.seed ^ PHOTON_SALT,
-                            );
-                            let direction = uniform_sphere(sampler.next_2d());
-                            let ray = Ray::new(position, direction, 0.0);
-                            pass.trace(&ray, color, 0, photon_energy, 0, &mut sampler);
-                        }
-                        progress.add(end - first);
-                    });
-                });
+                trace_photons(
+                    &pool,
+                    settings,
+                    round as u64,
+                    PHOTON_SALT,
+                    traced,
+                    &progress,
+                    |i, sampler| {
+                        let (position, color) = lights[(i / per_light) as usize];
+                        let direction = uniform_sphere(sampler.next_2d());
+                        let ray = Ray::new(position, direction, 0.0);
+                        pass.trace(&ray, color, 0, photon_energy, 0, sampler);
+                    },
+                );
                 // 4. Each pixel adds the round over its camera rays so far.
                 let rays_so_far = ((round + 1) * SAMPLES_PER_ROUND) as f64;
                 for (index, value) in board.iter_mut().enumerate() {
