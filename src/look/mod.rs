@@ -206,6 +206,10 @@ pub struct Look {
     pub dispersion_sensor: DispersionSensor,
     /// How spheres meet rays (Cambrian's test for its glass balls).
     pub sphere_test: SphereTest,
+    /// Whether rectangles meet rays by Cambrian's test, which loses the
+    /// hits whose point does not round into the rectangle's box
+    /// ([`crate::geometry::cambrian_rectangle`]).
+    pub cambrian_rectangles: bool,
     /// Whether surfaces of revolution turn about z (jefflyy's: the
     /// profile's y becomes z) rather than about y.
     pub revolutions_about_z: bool,
@@ -282,6 +286,7 @@ impl Look {
             face_normals: self.face_normals,
             cav_plane_frames: self.texture_frames == TextureFrames::Cav,
             single_precision_planes: self.single_precision_planes,
+            cambrian_rectangles: self.cambrian_rectangles,
         }
     }
 
