@@ -5,6 +5,7 @@
 
 pub mod cambrian_rectangle;
 pub mod cambrian_sphere;
+pub mod cav_revolution;
 pub mod cav_sphere;
 pub mod curve;
 pub mod disk;
@@ -26,6 +27,7 @@ pub mod triangle;
 
 use crate::math::{Point3, Vec3};
 
+pub use cav_revolution::CavRevolution;
 pub use curve::{Curve, CurveKind, Profile};
 pub use disk::Disk;
 pub use mesh::{Mesh, MeshData};

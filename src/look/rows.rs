@@ -139,6 +139,9 @@ impl Look {
         // (`CaveSpiderLZJ/PathTracingFinal:include/sphere.hpp`, `triangle.hpp`).
         every_hit_enters: true,
         sphere_test: SphereTest::Cav,
+        // Its surfaces of revolution are meshes of the profile
+        // (`CaveSpiderLZJ/PathTracingFinal:include/revsurface.hpp`).
+        revolution_test: RevolutionTest::CavMesh,
         texture_frames: TextureFrames::Cav,
         ..Look::ORIGINAL
     };

@@ -119,7 +119,10 @@ pub struct ShapeRules {
 fn culling_box(primitive: &Primitive) -> Option<Aabb> {
     if !matches!(
         primitive.shape,
-        Shape::Mesh { .. } | Shape::Revolution(_) | Shape::SeededRevolution(_)
+        Shape::Mesh { .. }
+            | Shape::Revolution(_)
+            | Shape::SeededRevolution(_)
+            | Shape::CavRevolution(_)
     ) {
         return None;
     }
