@@ -3,6 +3,7 @@
 //! one hit that survives (point, normals, uv and the derivatives of the point
 //! with respect to uv).
 
+pub mod cambrian_rectangle;
 pub mod cambrian_sphere;
 pub mod cav_revolution;
 pub mod cav_sphere;

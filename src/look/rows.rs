@@ -38,6 +38,7 @@ impl Look {
         lens_shape: None,
         dispersion_sensor: DispersionSensor::Spectral,
         sphere_test: SphereTest::Robust,
+        cambrian_rectangles: false,
         revolutions_about_z: false,
         revolution_test: RevolutionTest::Robust,
         photons: None,
@@ -158,6 +159,11 @@ impl Look {
         texture_frames: TextureFrames::Cambrian,
         dispersion_sensor: DispersionSensor::Cambrian,
         sphere_test: SphereTest::Cambrian,
+        // `src/main.cpp`, `shift`: the eye moves within a cube whose side
+        // is `aperture_size` (the dialect halves it into our half side).
+        lens_shape: Some(LensShape::Square),
+        // `include/plane.hpp`, class `Rectangle`: its back walls and floors.
+        cambrian_rectangles: true,
         ..Look::ORIGINAL
     };
 

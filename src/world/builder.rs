@@ -110,7 +110,10 @@ impl Builder {
                 edge_u,
                 edge_v,
                 ..
-            } => Rectangle::new(*origin, *edge_u, *edge_v).map(Shape::Rectangle),
+            } => Rectangle::new(*origin, *edge_u, *edge_v).map(|mut rectangle| {
+                rectangle.cambrian = self.rules.cambrian_rectangles;
+                Shape::Rectangle(rectangle)
+            }),
             Object::Disk {
                 center,
                 normal,
