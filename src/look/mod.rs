@@ -119,6 +119,11 @@ pub enum PixelSampling {
     /// renderers that pass `(x, y)` to the framework's camera without
     /// adding 0.5: hanna0911, emily-jia, jefflyy).
     Corner,
+    /// A point drawn uniformly within half a pixel of the pixel's corner,
+    /// its integer coordinate (cav's: it adds a uniform number in
+    /// [-0.5, 0.5) to each integer coordinate), so its image lies half a
+    /// pixel away from the centred filters'.
+    AboutCorner,
 }
 
 impl PixelSampling {

@@ -133,6 +133,8 @@ impl Look {
         miss: Miss::Weighted,
         point_lights: PointLights::Never,
         phong_lobes: false,
+        // `src/main.cpp`: the camera's point is (x + u - 0.5, y + v - 0.5).
+        pixels: PixelSampling::AboutCorner,
         texture_rows: TextureRows::Down,
         // Its spheres give the inward normal to a ray that starts inside,
         // its triangles and planes flip theirs towards the ray
