@@ -77,7 +77,7 @@ pub fn framework_bmp_reading(bytes: &[u8]) -> Option<Texture> {
     let word = |at: usize| -> Option<u32> {
         Some(u32::from_le_bytes(bytes.get(at..at + 4)?.try_into().ok()?))
     };
-    if bytes.get(..2)? != b"BM" {
+    if bytes.get(..2)? != [b'B', b'M'] {
         return None;
     }
     let offset = word(10)? as usize;
