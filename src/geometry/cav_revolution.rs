@@ -313,12 +313,25 @@ fn uniform_bspline(controls: &[[f64; 2]], s: f64) -> ([f64; 2], [f64; 2]) {
     let position = s * scale;
     let mut point = [0.0; 2];
     let mut derivative = [0.0; 2];
-    for (i, c) in controls.iter().enumerate() {
+    // Only the four controls whose basis function reaches `s`: i in
+    // (position - 4, position].
+    if !position.is_finite() {
+        return (point, derivative);
+    }
+    let last = position.floor().clamp(-1.0, controls.len() as f64 - 1.0);
+    let first = (last - 3.0).max(0.0) as usize;
+    let reaching = controls
+        .iter()
+        .enumerate()
+        .take(last.max(0.0) as usize + 1)
+        .skip(first);
+    for (i, c) in reaching {
         let (weight, slope) = cardinal_cubic(position - i as f64);
-        for axis in 0..2 {
-            point[axis] += weight * c[axis];
-            derivative[axis] += slope * scale * c[axis];
-        }
+        point = [point[0] + weight * c[0], point[1] + weight * c[1]];
+        derivative = [
+            derivative[0] + slope * scale * c[0],
+            derivative[1] + slope * scale * c[1],
+        ];
     }
     (point, derivative)
 }
@@ -459,6 +472,30 @@ mod tests {
         // The curve runs from y = 1 to 6; its middle s = k / m is right.
         assert!(tilt(3.5) < 0.05, "{}", tilt(3.5));
         assert!(tilt(1.2) > 0.2, "{}", tilt(1.2));
+    }
+
+    #[test]
+    fn a_uniform_bspline_sums_every_control_whose_basis_reaches() {
+        // Against the sum over all controls, inside and outside the knot
+        // range (where fewer than four reach).
+        let controls: Vec<[f64; 2]> = (0..9)
+            .map(|i| [f64::from(i).sin() + 2.0, f64::from(i * i) * 0.1])
+            .collect();
+        let scale = (controls.len() + 3) as f64;
+        for i in 0..=200 {
+            let s = f64::from(i) / 200.0;
+            let mut full = ([0.0; 2], [0.0; 2]);
+            for (j, c) in controls.iter().enumerate() {
+                let (w, d) = cardinal_cubic(s * scale - j as f64);
+                full.0 = [full.0[0] + w * c[0], full.0[1] + w * c[1]];
+                full.1 = [full.1[0] + d * scale * c[0], full.1[1] + d * scale * c[1]];
+            }
+            let (point, derivative) = uniform_bspline(&controls, s);
+            for axis in 0..2 {
+                assert!((point[axis] - full.0[axis]).abs() < 1e-12, "{s}");
+                assert!((derivative[axis] - full.1[axis]).abs() < 1e-9, "{s}");
+            }
+        }
     }
 
     #[test]
