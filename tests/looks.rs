@@ -300,3 +300,92 @@ fn wso_planes_keep_a_ray_that_leaves_from_a_point_on_them() {
         "{kept_in_float32} {refracted_through}"
     );
 }
+
+#[test]
+fn cambrian_rectangles_lose_the_hits_that_round_off_their_plane() {
+    // An emitting wall filling the view with nothing behind it. Cambrian's
+    // rectangle keeps a hit only when the hit point's z rounds exactly to
+    // the wall's: the camera rays that do not go through it and find
+    // black, so the wall is darker in the cambrian look than it is.
+    let light = Material {
+        color: Color::BLACK,
+        emission: Color::gray(1.0),
+        ..Material::default()
+    };
+    let root = Object::Rectangle {
+        origin: Vec3::new(-100.0, -100.0, 0.0),
+        edge_u: Vec3::new(200.0, 0.0, 0.0),
+        edge_v: Vec3::new(0.0, 200.0, 0.0),
+        material: 0,
+    };
+    let mut scene = common::scene_with(vec![light], root);
+    // As far as Cambrian's camera from its back wall in `focus_on_earth`.
+    scene.camera.center = Vec3::new(0.3, 0.7, 295.1);
+    let seen = |look: Look| mean(&scene, &settings(look, look.integrator, 64)).r;
+    let solid = seen(Look {
+        cambrian_rectangles: false,
+        ..Look::CAMBRIAN
+    });
+    let cambrian = seen(Look::CAMBRIAN);
+    assert!((solid - 1.0).abs() < 1e-9, "{solid}");
+    assert!(cambrian > 0.6 && cambrian < 0.95, "{cambrian}");
+}
+
+#[test]
+fn cambrian_eyes_fill_a_square_of_side_aperture_size() {
+    use pathtracer::camera::Camera;
+    use pathtracer::scene::LoadOptions;
+    use pathtracer::scene::model::Dialect;
+    let text = "PerspectiveCamera { center 0 0 0 direction 0 0 -1 up 0 1 0 angle 60 \
+                width 4 height 4 focal_length 250 aperture_size 2 }";
+    let options = LoadOptions {
+        dialect: Some(Dialect::Cambrian),
+        ..LoadOptions::default()
+    };
+    let file = std::path::Path::new("cambrian.txt");
+    let document = pathtracer::scene::parse(text, file).expect("parses");
+    let scene = pathtracer::scene::build(&document, file, &options).expect("builds");
+    let camera = Camera::new(&Look::CAMBRIAN.camera(&scene.camera), 4, 4);
+    // Corners of the unit square of lens samples reach the cube's edges,
+    // one either way along right (x) and up (y), never beyond.
+    for (lens, corner) in [([0.0, 0.0], (-1.0, -1.0)), ([1.0, 1.0], (1.0, 1.0))] {
+        let eye = camera.ray(2.0, 2.0, lens, 0.0).origin;
+        assert!((eye.x.abs() - 1.0).abs() < 1e-12 && (eye.y.abs() - 1.0).abs() < 1e-12);
+        assert_eq!((eye.x.signum(), eye.y.signum()), corner, "{eye:?}");
+    }
+    for i in 0..64 {
+        let lens = [(i % 8) as f64 / 8.0 + 0.01, (i / 8) as f64 / 8.0 + 0.01];
+        let eye = camera.ray(1.0, 3.0, lens, 0.0).origin;
+        assert!(eye.x.abs() <= 1.0 && eye.y.abs() <= 1.0 && eye.z == 0.0);
+    }
+}
+
+#[test]
+fn cambrian_reads_the_world_map_28_texels_early() {
+    // `tex_world_map.bmp` has a 124-byte header (pixels at byte 138); the
+    // course framework's reader starts at byte 54, so its texel in column
+    // c shows our pixel c - 28 of the same row.
+    use pathtracer::scene::LoadOptions;
+    let Some(file) =
+        common::shared_file("reference/cambrian-pathtracer/testcases/focus_on_earth.txt")
+    else {
+        return;
+    };
+    let base = file
+        .parent()
+        .and_then(std::path::Path::parent)
+        .map(|p| p.to_path_buf());
+    let options = LoadOptions {
+        base,
+        ..LoadOptions::default()
+    };
+    let scene = pathtracer::scene::load_scene(&file, &options).expect("loads");
+    assert_eq!(scene.framework_readings.len(), 1, "only the world map");
+    let (&index, framework) = scene.framework_readings.iter().next().expect("one");
+    let ours = &scene.textures[index];
+    assert_eq!((ours.width, ours.height), (1280, 640));
+    for (row, column) in [(0, 28), (100, 500), (639, 1279), (320, 700)] {
+        let k = row * 1280 + column;
+        assert_eq!(framework.texels[k], ours.texels[k - 28], "{row} {column}");
+    }
+}

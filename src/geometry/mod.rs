@@ -3,7 +3,9 @@
 //! one hit that survives (point, normals, uv and the derivatives of the point
 //! with respect to uv).
 
+pub mod cambrian_rectangle;
 pub mod cambrian_sphere;
+pub mod cav_revolution;
 pub mod cav_sphere;
 pub mod curve;
 pub mod disk;
@@ -25,6 +27,7 @@ pub mod triangle;
 
 use crate::math::{Point3, Vec3};
 
+pub use cav_revolution::CavRevolution;
 pub use curve::{Curve, CurveKind, Profile};
 pub use disk::Disk;
 pub use mesh::{Mesh, MeshData};

@@ -1,7 +1,7 @@
 //! Parallelograms `origin + s * edge_u + t * edge_v`, s and t in [0, 1].
 
-use super::UvMapping;
 use super::{Intersection, SurfaceHit};
+use super::{UvMapping, cambrian_rectangle};
 use crate::math::{Aabb, Point3, Ray, Vec3};
 
 #[derive(Clone, Copy, Debug)]
@@ -14,6 +14,9 @@ pub struct Rectangle {
     /// `edge_v x n / |edge_u x edge_v|` and `n x edge_u / |...|`: dual basis giving (s, t).
     dual_u: Vec3,
     dual_v: Vec3,
+    /// Whether rays meet it by Cambrian's test ([`cambrian_rectangle`]):
+    /// a hit whose point does not round into the rectangle's box is lost.
+    pub cambrian: bool,
 }
 
 impl Rectangle {
@@ -32,6 +35,7 @@ impl Rectangle {
             normal,
             dual_u: edge_v.cross(&cross) / area_squared,
             dual_v: cross.cross(&edge_u) / area_squared,
+            cambrian: false,
         })
     }
 
@@ -41,6 +45,20 @@ impl Rectangle {
 
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
+        if self.cambrian {
+            let t = cambrian_rectangle::intersect(
+                &self.origin,
+                &self.edge_u,
+                &self.edge_v,
+                ray,
+                t_min,
+                t_max,
+            )?;
+            let local = ray.at(t) - self.origin;
+            let s = self.dual_u.dot(&local).clamp(0.0, 1.0);
+            let r = self.dual_v.dot(&local).clamp(0.0, 1.0);
+            return Some(Intersection::new(t, s, r));
+        }
         let denominator = self.normal.dot(&ray.direction);
         if denominator == 0.0 {
             return None;

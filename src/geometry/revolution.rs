@@ -35,6 +35,10 @@ pub enum RevolutionTest {
     /// unchecked, the normal facing the ray (a [`super::SeededRevolution`],
     /// built instead of a `Revolution`).
     TessellationSeeded,
+    /// CaveSpiderLZJ's: the nearest triangle of a tessellation, moved a
+    /// little by ten damped Newton steps that also pick the normal (a
+    /// [`super::CavRevolution`], built instead of a `Revolution`).
+    CavMesh,
 }
 
 /// At most this many seeds per ray are refined (further ones are dropped).

@@ -3,8 +3,8 @@
 use std::sync::Arc;
 
 use super::{
-    Disk, Intersection, Mesh, Plane, Rectangle, Revolution, SeededRevolution, Sphere, SurfaceHit,
-    Triangle,
+    CavRevolution, Disk, Intersection, Mesh, Plane, Rectangle, Revolution, SeededRevolution,
+    Sphere, SurfaceHit, Triangle,
 };
 use crate::math::{Aabb, Ray};
 
@@ -23,6 +23,8 @@ pub enum Shape {
     Revolution(Arc<Revolution>),
     /// A look's surface of revolution found from its tessellation (yao-jz's).
     SeededRevolution(Arc<SeededRevolution>),
+    /// CaveSpiderLZJ's surface of revolution: its mesh, then its steps.
+    CavRevolution(Arc<CavRevolution>),
 }
 
 impl Shape {
@@ -37,6 +39,7 @@ impl Shape {
             Shape::Mesh { mesh, .. } => mesh.intersect(ray, t_min, t_max),
             Shape::Revolution(s) => s.intersect(ray, t_min, t_max),
             Shape::SeededRevolution(s) => s.intersect(ray, t_min, t_max),
+            Shape::CavRevolution(s) => s.intersect(ray, t_min, t_max),
         }
     }
 
@@ -63,6 +66,7 @@ impl Shape {
             Shape::Mesh { mesh, smooth } => mesh.surface(ray, hit, *smooth),
             Shape::Revolution(s) => s.surface(ray, hit),
             Shape::SeededRevolution(s) => s.surface(ray, hit),
+            Shape::CavRevolution(s) => s.surface(ray, hit),
         }
     }
 
@@ -77,6 +81,7 @@ impl Shape {
             Shape::Mesh { mesh, .. } => mesh.bounds(),
             Shape::Revolution(s) => Some(s.bounds()),
             Shape::SeededRevolution(s) => s.bounds(),
+            Shape::CavRevolution(s) => s.bounds(),
         }
     }
 

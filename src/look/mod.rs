@@ -10,7 +10,7 @@
 //! | `original` | the ported renderer (canonical dialect) | path tracing | 5 | background for camera rays | when the scene has no emitter | yes | Schlick |
 //! | `physical` | this project's physically based rendering | path tracing | 5 | background, weighted, at every depth | when the scene has no emitter | yes | exact Fresnel |
 //! | `pa1` | the course framework's ray caster (Achazwl, aliezlo `rc`, Cambrian's first renders) | ray casting: Phong per light, no shadows, pixel centres | 1 | background | always | the framework's | none |
-//! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick; its sphere test (frosted glass balls); texels times the colour, its texture frames, its dispersion (one wavelength per camera sample times its colour) |
+//! | `cambrian` | Cambrian-yzt/PathTracer | path tracing | unlimited (roulette) | black | never | no | Schlick; its sphere test (frosted glass balls); texels times the colour, its texture frames, its dispersion (one wavelength per camera sample times its colour); its rectangles, which lose the hits that round off their plane; a square lens |
 //! | `wso` | W-Solaris (and aliezlo's `pt`), the D3 family's path tracer | path tracing by BSDF sampling, rays leaving from the hit itself; spheres, planes and triangles met in f32 by its tests, diffuse bounces about the modelled normal (`alz-pt` keeps the f64 ones) | 15 hits | background, unweighted, at every depth | never | no | Schlick; planes one-sided and hit at distance 0 too; square lens |
 //! | `osb` | one-step-beh1nd | path tracing | unlimited (roulette) | black | never | no | reflect with 0.25 + R/2, unweighted; osb's `glossy` weight |
 //! | `ylc` | ylc2001 | path tracing | unlimited (roulette) | background, unweighted | never | no | Schlick |
@@ -119,6 +119,11 @@ pub enum PixelSampling {
     /// renderers that pass `(x, y)` to the framework's camera without
     /// adding 0.5: hanna0911, emily-jia, jefflyy).
     Corner,
+    /// A point drawn uniformly within half a pixel of the pixel's corner,
+    /// its integer coordinate (cav's: it adds a uniform number in
+    /// [-0.5, 0.5) to each integer coordinate), so its image lies half a
+    /// pixel away from the centred filters'.
+    AboutCorner,
 }
 
 impl PixelSampling {
@@ -206,6 +211,10 @@ pub struct Look {
     pub dispersion_sensor: DispersionSensor,
     /// How spheres meet rays (Cambrian's test for its glass balls).
     pub sphere_test: SphereTest,
+    /// Whether rectangles meet rays by Cambrian's test, which loses the
+    /// hits whose point does not round into the rectangle's box
+    /// ([`crate::geometry::cambrian_rectangle`]).
+    pub cambrian_rectangles: bool,
     /// Whether surfaces of revolution turn about z (jefflyy's: the
     /// profile's y becomes z) rather than about y.
     pub revolutions_about_z: bool,
@@ -282,6 +291,7 @@ impl Look {
             face_normals: self.face_normals,
             cav_plane_frames: self.texture_frames == TextureFrames::Cav,
             single_precision_planes: self.single_precision_planes,
+            cambrian_rectangles: self.cambrian_rectangles,
         }
     }
 

@@ -38,6 +38,7 @@ impl Look {
         lens_shape: None,
         dispersion_sensor: DispersionSensor::Spectral,
         sphere_test: SphereTest::Robust,
+        cambrian_rectangles: false,
         revolutions_about_z: false,
         revolution_test: RevolutionTest::Robust,
         photons: None,
@@ -132,6 +133,8 @@ impl Look {
         miss: Miss::Weighted,
         point_lights: PointLights::Never,
         phong_lobes: false,
+        // `src/main.cpp`: the camera's point is (x + u - 0.5, y + v - 0.5).
+        pixels: PixelSampling::AboutCorner,
         texture_rows: TextureRows::Down,
         // Its spheres give the inward normal to a ray that starts inside,
         // its planes flip theirs towards the ray; its triangles keep their
@@ -139,6 +142,9 @@ impl Look {
         // `plane.hpp`, `triangle.hpp` at `d730b9c`; `integrator::cav`).
         every_hit_enters: true,
         sphere_test: SphereTest::Cav,
+        // Its surfaces of revolution are meshes of the profile
+        // (`CaveSpiderLZJ/PathTracingFinal:include/revsurface.hpp`).
+        revolution_test: RevolutionTest::CavMesh,
         texture_frames: TextureFrames::Cav,
         ..Look::ORIGINAL
     };
@@ -154,6 +160,11 @@ impl Look {
         texture_frames: TextureFrames::Cambrian,
         dispersion_sensor: DispersionSensor::Cambrian,
         sphere_test: SphereTest::Cambrian,
+        // `src/main.cpp`, `shift`: the eye moves within a cube whose side
+        // is `aperture_size` (the dialect halves it into our half side).
+        lens_shape: Some(LensShape::Square),
+        // `include/plane.hpp`, class `Rectangle`: its back walls and floors.
+        cambrian_rectangles: true,
         ..Look::ORIGINAL
     };
 

@@ -340,13 +340,18 @@ impl RenderScene {
 
     /// A camera ray through pixel (`x`, `y`), `y` from the bottom, and its
     /// lens sample: a position under the look's pixel filter (the 2x2
-    /// sub-pixels' tent, see `subpixel`, the centre or the corner), lens and time only
+    /// sub-pixels' tent, see `subpixel`, the centre, the corner or a box
+    /// about the corner), lens and time only
     /// where the scene needs them, drawn from `sampler` in that order.
     pub fn camera_ray(&self, x: usize, y: usize, sampler: &mut Sampler) -> (Ray, [f64; 2]) {
         let (film_x, film_y) = match self.look().pixels {
             PixelSampling::Tent => film_position(x, y, sampler.next_2d()),
             PixelSampling::Centre => (x as f64 + 0.5, y as f64 + 0.5),
             PixelSampling::Corner => (x as f64, y as f64),
+            PixelSampling::AboutCorner => {
+                let [u, v] = sampler.next_2d();
+                (x as f64 + u - 0.5, y as f64 + v - 0.5)
+            }
         };
         let lens = if self.plan.lens {
             sampler.next_2d()

@@ -6,8 +6,8 @@ use std::sync::Arc;
 use super::{Primitive, ShapeRules};
 use crate::geometry::MeshData;
 use crate::geometry::{
-    Disk, Mesh, Plane, Rectangle, Revolution, RevolutionTest, SeededRevolution, Shape, Sphere,
-    SphereTest, Transform, Triangle,
+    CavRevolution, Disk, Mesh, Plane, Rectangle, Revolution, RevolutionTest, SeededRevolution,
+    Shape, Sphere, SphereTest, Transform, Triangle,
 };
 use crate::math::Matrix;
 use crate::scene::model::Object;
@@ -110,7 +110,10 @@ impl Builder {
                 edge_u,
                 edge_v,
                 ..
-            } => Rectangle::new(*origin, *edge_u, *edge_v).map(Shape::Rectangle),
+            } => Rectangle::new(*origin, *edge_u, *edge_v).map(|mut rectangle| {
+                rectangle.cambrian = self.rules.cambrian_rectangles;
+                Shape::Rectangle(rectangle)
+            }),
             Object::Disk {
                 center,
                 normal,
@@ -164,6 +167,9 @@ impl Builder {
             Object::Revolution { profile, .. } => match self.rules.revolution_test {
                 RevolutionTest::TessellationSeeded => {
                     SeededRevolution::new(profile).map(|r| Shape::SeededRevolution(Arc::new(r)))
+                }
+                RevolutionTest::CavMesh => {
+                    CavRevolution::new(profile).map(|r| Shape::CavRevolution(Arc::new(r)))
                 }
                 test => Revolution::new(profile).map(|mut revolution| {
                     revolution.test = test;

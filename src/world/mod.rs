@@ -108,6 +108,9 @@ pub struct ShapeRules {
     pub cav_plane_frames: bool,
     /// Planes are met in single precision (see `Plane::intersect`).
     pub single_precision_planes: bool,
+    /// Rectangles are met by Cambrian's test
+    /// ([`crate::geometry::cambrian_rectangle`]).
+    pub cambrian_rectangles: bool,
 }
 
 /// The box a linear primitive is culled by (see `World::linear_boxes`):
@@ -116,7 +119,10 @@ pub struct ShapeRules {
 fn culling_box(primitive: &Primitive) -> Option<Aabb> {
     if !matches!(
         primitive.shape,
-        Shape::Mesh { .. } | Shape::Revolution(_) | Shape::SeededRevolution(_)
+        Shape::Mesh { .. }
+            | Shape::Revolution(_)
+            | Shape::SeededRevolution(_)
+            | Shape::CavRevolution(_)
     ) {
         return None;
     }

@@ -81,7 +81,12 @@ pub fn build_camera(
             }
             "aperture" | "aperture_size" | "lens_radius" | "len_radius" | "field"
             | "interfereRatio" => {
-                let radius = cursor.number(context, key)?;
+                let mut radius = cursor.number(context, key)?;
+                if context.dialect == Dialect::Cambrian && key == "aperture_size" {
+                    // Cambrian moves the eye within a cube of this side
+                    // (`src/main.cpp`, `shift`): half of it either way.
+                    radius *= 0.5;
+                }
                 lens_radius = if radius >= 99990.0 {
                     0.0
                 } else {
@@ -254,7 +259,7 @@ fn read_mist(
 mod tests {
     use crate::scene::LoadOptions;
     use crate::scene::build::build;
-    use crate::scene::model::{FovAxis, LensShape};
+    use crate::scene::model::{Dialect, FovAxis, LensShape};
     use crate::scene::parse::parse;
     use std::path::Path;
 
@@ -292,6 +297,20 @@ mod tests {
         );
         let c = camera("PerspectiveCamera { width 2 height 2 aperture 10 }").expect("ok");
         assert_eq!((c.lens_radius, c.lens_shape), (10.0, LensShape::Disk));
+    }
+
+    #[test]
+    fn cambrian_aperture_size_is_the_side_of_its_eye_cube() {
+        let text = "PerspectiveCamera { width 2 height 2 focal_length 250 aperture_size 2 }";
+        let doc = parse(text, Path::new("t.txt")).expect("parses");
+        let options = |dialect| LoadOptions {
+            dialect,
+            ..LoadOptions::default()
+        };
+        let cambrian = build(&doc, Path::new("t.txt"), &options(Some(Dialect::Cambrian)));
+        assert_eq!(cambrian.expect("builds").camera.lens_radius, 1.0);
+        let canonical = build(&doc, Path::new("t.txt"), &options(None));
+        assert_eq!(canonical.expect("builds").camera.lens_radius, 2.0);
     }
 
     #[test]
