@@ -359,3 +359,33 @@ fn cambrian_eyes_fill_a_square_of_side_aperture_size() {
         assert!(eye.x.abs() <= 1.0 && eye.y.abs() <= 1.0 && eye.z == 0.0);
     }
 }
+
+#[test]
+fn cambrian_reads_the_world_map_28_texels_early() {
+    // `tex_world_map.bmp` has a 124-byte header (pixels at byte 138); the
+    // course framework's reader starts at byte 54, so its texel in column
+    // c shows our pixel c - 28 of the same row.
+    use pathtracer::scene::LoadOptions;
+    let Some(file) =
+        common::shared_file("reference/cambrian-pathtracer/testcases/focus_on_earth.txt")
+    else {
+        return;
+    };
+    let base = file
+        .parent()
+        .and_then(std::path::Path::parent)
+        .map(|p| p.to_path_buf());
+    let options = LoadOptions {
+        base,
+        ..LoadOptions::default()
+    };
+    let scene = pathtracer::scene::load_scene(&file, &options).expect("loads");
+    assert_eq!(scene.framework_readings.len(), 1, "only the world map");
+    let (&index, framework) = scene.framework_readings.iter().next().expect("one");
+    let ours = &scene.textures[index];
+    assert_eq!((ours.width, ours.height), (1280, 640));
+    for (row, column) in [(0, 28), (100, 500), (639, 1279), (320, 700)] {
+        let k = row * 1280 + column;
+        assert_eq!(framework.texels[k], ours.texels[k - 28], "{row} {column}");
+    }
+}

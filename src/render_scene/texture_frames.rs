@@ -7,6 +7,11 @@
 //! | sphere | longitude from -z (towards -x, then +z), latitude from -y, both scaled to `W - 1` and `H - 1` | our longitude starts a quarter turn later: the image is rolled left by `W / 4` columns |
 //! | rectangle `point + s x + t y` | `(trunc(s k), trunc(t k))` with `k = min((W - 1) / abs(x), (H - 1) / abs(y))` texels per unit: the image is not stretched, one side is cut | the image cropped to `k abs(x)` columns from the left and `k abs(y)` rows from the bottom, then stretched as ours are |
 //!
+//! Its images are the course framework reader's
+//! ([`crate::scene::model::Scene::framework_readings`]): a BMP whose pixels
+//! do not start at byte 54 (`tex_world_map.bmp`'s start at 138) is read
+//! from byte 54, 28 texels early.
+//!
 //! So the look keeps our shapes' uv and samples what Cambrian samples,
 //! to within a texel. Each rewritten image is a new texture and each
 //! material whose image changes a new material, so shapes of other kinds
@@ -30,6 +35,12 @@ enum Rewrite {
 /// Rewrites the images of textured spheres and rectangles of `scene` so
 /// that our uv read what Cambrian's renderer read (see the module docs).
 pub fn apply_cambrian(scene: &mut Scene) {
+    // Cambrian reads BMPs with the course framework's reader.
+    for (&index, reading) in &scene.framework_readings {
+        if let Some(texture) = scene.textures.get_mut(index) {
+            *texture = Arc::clone(reading);
+        }
+    }
     let mut frames = Frames {
         textures: HashMap::new(),
         materials: HashMap::new(),
@@ -216,6 +227,25 @@ Group { MaterialIndex 0
             .root
             .for_each_leaf(&mut |leaf| found.extend(leaf.material()));
         found
+    }
+
+    #[test]
+    fn the_framework_reading_of_a_bmp_replaces_ours() {
+        // Ours reads column c of a row, the framework's reader (a longer
+        // header read as pixels) column c - 1: the square rectangle (no
+        // crop) then samples the framework's.
+        let mut scene = scene_with(numbered(10, 10));
+        let mut framework = numbered(10, 10);
+        framework.texels.rotate_right(1);
+        scene
+            .framework_readings
+            .insert(0, Arc::new(framework.clone()));
+        apply_cambrian(&mut scene);
+        let materials = leaf_materials(&scene);
+        assert_eq!(materials[2], 0);
+        let poster = &scene.textures[scene.materials[0].texture.unwrap()];
+        assert_eq!(**poster, framework);
+        assert_eq!(texel(poster, 0.55, 0.05), (4.0, 0.0));
     }
 
     #[test]

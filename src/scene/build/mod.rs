@@ -258,7 +258,8 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         _ => Object::Group(roots),
     };
     let texture_start = std::time::Instant::now();
-    let (materials, textures) = textures::load_textures(&mut context, specs, &root)?;
+    let (materials, (textures, framework_readings)) =
+        textures::load_textures(&mut context, specs, &root)?;
     let load = crate::scene::model::LoadStats {
         mesh_seconds: objects.mesh_seconds(),
         meshes_loaded: objects.meshes_loaded(),
@@ -272,6 +273,7 @@ pub fn build(document: &Document, file: &Path, options: &LoadOptions) -> Result<
         background,
         materials,
         textures,
+        framework_readings,
         lights,
         root,
         medium: scene_medium,

@@ -24,7 +24,7 @@ use crate::limits::shown_path;
 use crate::scene::MissingAssets;
 use crate::scene::build::descriptor::{self, Descriptor};
 use crate::scene::build::material::{MaterialSpec, PathRef};
-use crate::scene::build::texture_file::read_texture;
+use crate::scene::build::texture_file::read_texture_readings;
 use crate::scene::build::{Context, paths};
 use crate::scene::error::SceneError;
 use crate::scene::model::{Bump, Material, Object};
@@ -77,12 +77,17 @@ impl MaterialImages {
     }
 }
 
+/// The loaded images: the texture table, and the course framework's
+/// reading of those whose reading differs from ours
+/// ([`crate::scene::model::Scene::framework_readings`]).
+pub type LoadedTextures = (Vec<Arc<Texture>>, HashMap<usize, Arc<Texture>>);
+
 /// Final materials and the texture table. Unused materials keep no images.
 pub fn load_textures(
     context: &mut Context,
     specs: Vec<MaterialImages>,
     root: &Object,
-) -> Result<(Vec<Material>, Vec<Arc<Texture>>), SceneError> {
+) -> Result<(Vec<Material>, LoadedTextures), SceneError> {
     let mut used = BTreeSet::new();
     root.for_each_leaf(&mut |leaf| {
         used.extend(leaf.materials());
@@ -136,7 +141,7 @@ pub fn load_textures(
         }
         materials.push(material);
     }
-    Ok((materials, loader.textures))
+    Ok((materials, (loader.textures, loader.framework_readings)))
 }
 
 /// What a material uses an image for (decides what a missing one becomes).
@@ -162,6 +167,8 @@ enum Source {
 #[derive(Default)]
 struct Loader {
     textures: Vec<Arc<Texture>>,
+    /// The course framework's readings that differ from ours, by index.
+    framework_readings: HashMap<usize, Arc<Texture>>,
     cache: HashMap<PathBuf, usize>,
     /// rub's descriptor files, each read once (by the path as written).
     descriptors: HashMap<String, Descriptor>,
@@ -243,13 +250,17 @@ impl Loader {
         if let Some(&index) = self.cache.get(&file) {
             return Ok(Some(index));
         }
-        let texture = read_texture(&file, context.options.memory_budget).map_err(|e| {
+        let read = read_texture_readings(&file, context.options.memory_budget);
+        let (texture, framework) = read.map_err(|e| {
             context.error(
                 path.location,
                 format!("cannot read texture '{}': {e}", shown_path(&file)),
             )
         })?;
         let index = self.push(texture);
+        if let Some(framework) = framework {
+            self.framework_readings.insert(index, Arc::new(framework));
+        }
         context.assets.push(file.clone());
         self.cache.insert(file, index);
         Ok(Some(index))

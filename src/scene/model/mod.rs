@@ -25,6 +25,11 @@ pub struct Scene {
     pub materials: Vec<Material>,
     /// Images referred to by materials (`Material::texture`, `Material::normal_map`).
     pub textures: Vec<Arc<Texture>>,
+    /// How the course framework's BMP reader reads the textures whose
+    /// reading differs from ours, by index into `textures` (see
+    /// `scene::build::texture_file::framework_bmp_reading`): what the looks
+    /// of renderers that keep that reader sample.
+    pub framework_readings: std::collections::HashMap<usize, Arc<Texture>>,
     pub lights: Vec<Light>,
     /// The object tree: groups and transforms over shapes.
     pub root: Object,
@@ -82,6 +87,7 @@ impl Scene {
             background: Color::BLACK,
             materials,
             textures: Vec::new(),
+            framework_readings: std::collections::HashMap::new(),
             lights: Vec::new(),
             root,
             medium: None,
