@@ -5,7 +5,6 @@ mod common;
 
 use common::{mean, render_text};
 use pathtracer::geometry::{Sphere, SphereTest};
-use pathtracer::integrator::Integrator;
 use pathtracer::look::Look;
 use pathtracer::math::{Point3, Ray, Vec3};
 use pathtracer::rng::Rng;
@@ -146,37 +145,64 @@ fn cav_light_caps_are_met_again_by_rays_leaving_them() {
     assert_eq!(cap_rehits(SphereTest::Robust), 0);
 }
 
-/// A white floor lit by a small, bright ball above it.
-const SMALL_LIGHT: &str = "PerspectiveCamera { center 0 0 5 direction 0 0 -1 up 0 1 0 \
-     angle 30 width 8 height 8 focus 0 field 0 }\nBackground { color 0 0 0 }\n\
-     Materials { numMaterials 2 Material { diffuseColor 0.5 0.5 0.5 }\n\
-     Material { diffuseColor 0 0 0 luminance 25 25 25 } }\n\
-     Group { numObjects 2 MaterialIndex 0 Plane { normal 0 0 1 offset 0 }\n\
-     MaterialIndex 1 Sphere { center 0 3 2 radius 0.2 } }";
+/// A closed box (floor z = 0, ceiling z = 6, walls at +-3) lit by the cap
+/// of a radius-600 sphere sunk into the ceiling, smallpt-style.
+const CAPPED_BOX: &str = "PerspectiveCamera { center 0 0 3 direction 0 0 -1 up 0 1 0 \
+     angle 30 width 4 height 4 focus 0 field 0 }\nBackground { color 0 0 0 }\n\
+     Materials { numMaterials 2 Material { diffuseColor 0.75 0.75 0.75 }\n\
+     Material { diffuseColor 0 0 0 luminance 10 10 10 } }\n\
+     Group { numObjects 7 MaterialIndex 0 Plane { normal 0 0 1 offset 0 }\n\
+     Plane { normal 0 0 -1 offset -6 } Plane { normal 1 0 0 offset -3 }\n\
+     Plane { normal -1 0 0 offset -3 } Plane { normal 0 1 0 offset -3 }\n\
+     Plane { normal 0 -1 0 offset -3 }\n\
+     MaterialIndex 1 Sphere { center 0 0 605.995 radius 600 } }";
 
-/// The spread of the pixels of a uniformly lit patch over their mean.
-fn relative_spread(look: Look) -> f64 {
-    // About one bounce in 500 meets the ball: the 4096 paths find it a
-    // few times, whatever the sample points (at 16 spp it may be none).
-    let image = render_text("small-light", SMALL_LIGHT, look, 64);
-    let values: Vec<f64> = image.pixels.iter().map(|p| p.g).collect();
-    let m = values.iter().sum::<f64>() / values.len() as f64;
-    let variance = values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / values.len() as f64;
-    variance.sqrt() / m
+/// Mean and variance of `estimate` over paths from the box's middle down
+/// to its floor.
+fn floor_statistics(
+    scene: &pathtracer::render_scene::RenderScene,
+    estimate: fn(
+        &pathtracer::render_scene::RenderScene,
+        Ray,
+        &mut pathtracer::sampler::Sampler,
+    ) -> pathtracer::color::Color,
+) -> (f64, f64) {
+    let paths = 40_000;
+    let values: Vec<f64> = (0..paths)
+        .map(|i| {
+            let rng = Rng::for_sample(i, 0, 11);
+            let mut sampler = pathtracer::sampler::Sampler::Independent(rng);
+            let ray = Ray::new(Point3::new(0.3, -0.2, 3.0), -Vec3::z(), 0.0);
+            estimate(scene, ray, &mut sampler).g
+        })
+        .collect();
+    let m = values.iter().sum::<f64>() / paths as f64;
+    let variance = values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (paths as f64 - 1.0);
+    (m, variance)
 }
 
 #[test]
-fn cav_finds_its_lights_by_the_bounce_alone() {
-    // Without light samples only the bounces that happen to meet the small
-    // ball bring light: the floor is far noisier than with them.
-    let cav = relative_spread(Look::CAV);
-    let sampled = relative_spread(Look {
-        integrator: Integrator::Path,
-        ..Look::CAV
-    });
+fn cav_light_samples_keep_its_mean_and_lower_its_variance() {
+    use pathtracer::integrator::cav;
+    use pathtracer::render_scene::{RenderScene, SceneSettings};
+    use pathtracer::scene::{LoadOptions, load_scene};
+    let file = common::write_scene("capped-box", CAPPED_BOX);
+    let scene = load_scene(&file, &LoadOptions::default()).expect("loads");
+    let settings = SceneSettings::defaults(&scene, Look::CAV);
+    let scene = RenderScene::build(scene, &settings);
+    std::fs::remove_dir_all(file.parent().expect("a folder")).ok();
+    let (bounce, bounce_variance) = floor_statistics(&scene, cav::radiance_bounce_only);
+    let (sampled, sampled_variance) = floor_statistics(&scene, cav::radiance);
+    // Five standard errors of the difference of two independent means.
+    let error = ((bounce_variance + sampled_variance) / 40_000.0).sqrt();
+    assert!(bounce > 0.0, "no light found");
     assert!(
-        cav > 3.0 * sampled,
-        "cav {cav}, with light samples {sampled}"
+        (bounce - sampled).abs() < 5.0 * error,
+        "bounce only {bounce}, with light samples {sampled} (standard error {error})"
+    );
+    assert!(
+        sampled_variance < 0.5 * bounce_variance,
+        "variance: bounce only {bounce_variance}, with light samples {sampled_variance}"
     );
 }
 

@@ -53,6 +53,8 @@ pub struct LightSample {
     pub emission: Color,
     /// Density in solid angle, including the probability of picking the emitter.
     pub pdf: f64,
+    /// The table entry sampled (see [`Emitters::entry_of`]).
+    pub entry: usize,
 }
 
 /// The emitters of a world and the distribution they are picked by.
@@ -189,6 +191,7 @@ impl Emitters {
             distance: sample.distance,
             emission: emitter.emission,
             pdf: sample.pdf * probability,
+            entry: index,
         })
     }
 
@@ -205,7 +208,7 @@ impl Emitters {
 
     /// The entry of the emitter that `hit` is on and its pick probability;
     /// `None` when light sampling never picks it.
-    fn entry_of(&self, hit: &WorldHit) -> Option<(usize, f64)> {
+    pub fn entry_of(&self, hit: &WorldHit) -> Option<(usize, f64)> {
         let distribution = self.distribution.as_ref()?;
         let first = self.first_entry.get(hit.primitive).copied().unwrap_or(NONE);
         if first == NONE {

@@ -32,19 +32,34 @@
 //!   ceiling, and collects their light in mid-air (see
 //!   `world::Primitive::intersect`).
 //!
+//! Light samples (next-event estimation, MIS by the power heuristic) are
+//! taken where cav takes a diffuse bounce, at a vertex that does not emit
+//! and whose normal has unit length (else cav's diffuse directions are not
+//! cosine-distributed), and whose diffuse direction is finite (cav's
+//! tangent is NaN for the normal -x, where its paths end unlit). The shadow ray is cav's own ray (same origin, same
+//! `T_MIN`, same tests): the sample counts only when that ray's first hit
+//! is the sampled table entry, met from its outside. The bounce of such a
+//! vertex weights the emission it finds on such a hit by the matching MIS
+//! weight; every other emission (camera rays, mirror and glass bounces,
+//! mid-air hits of shortened rays, light caps met again from inside)
+//! counts fully, so the expectation is cav's.
+//!
 //! Rays leave a hit from the hit point (cav's spheres add their own 1e-5
 //! along the ray) and meet nothing nearer than cav's 1e-4 plus that offset.
 
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 
 use crate::bsdf::LobeSet;
 use crate::color::Color;
 use crate::geometry::{Shape, cav_sphere};
-use crate::math::{Ray, Vec3};
+use crate::math::{Point3, Ray, Vec3};
 use crate::render_scene::RenderScene;
 use crate::sampler::Sampler;
 
-use super::scatter::miss;
+use crate::world::WorldHit;
+
+use super::path::power_heuristic;
+use super::scatter::{emitter_choice, miss};
 
 /// Hits after which cav's roulette plays (`RR`).
 const ROULETTE_AFTER: u32 = 4;
@@ -53,20 +68,46 @@ const ROULETTE_AFTER: u32 = 4;
 /// beyond its `DELTA`.
 const T_MIN: f64 = cav_sphere::MIN_DISTANCE as f64 + cav_sphere::LEAVING_OFFSET;
 
-pub fn radiance(scene: &RenderScene, mut ray: Ray, sampler: &mut Sampler) -> Color {
+/// cav's estimate along `ray`, with light samples at its diffuse bounces.
+pub fn radiance(scene: &RenderScene, ray: Ray, sampler: &mut Sampler) -> Color {
+    estimate(scene, ray, sampler, true)
+}
+
+/// cav's estimate along `ray` as its code computes it: light only where a
+/// bounce meets an emitter (same expectation as [`radiance`]).
+pub fn radiance_bounce_only(scene: &RenderScene, ray: Ray, sampler: &mut Sampler) -> Color {
+    estimate(scene, ray, sampler, false)
+}
+
+/// Where the current ray left a vertex that took a light sample.
+#[derive(Clone, Copy)]
+struct Sampled {
+    point: Point3,
+    normal: Vec3,
+}
+
+fn estimate(scene: &RenderScene, mut ray: Ray, sampler: &mut Sampler, nee: bool) -> Color {
     let max_depth = scene.max_depth();
     let mut result = Color::BLACK;
     let mut past = Color::WHITE;
     let mut depth = 0;
     let mut t_min = 0.0;
+    let mut sampled: Option<Sampled> = None;
     loop {
         let Some(hit) = scene.world().intersect(&ray, t_min, f64::INFINITY) else {
             result += miss(scene, depth, past);
             break;
         };
         let at = scene.shade(&hit, &ray);
-        let emission = at.material.emission;
         let point = ray.at(hit.t);
+        let emission = match sampled.take() {
+            Some(from) if !at.material.emission.is_black() => {
+                let light = light_pdf(scene, &from.point, ray.time, &hit, &point);
+                let bsdf = from.normal.dot(&ray.direction).max(0.0) / PI;
+                at.material.emission * power_heuristic(bsdf, light)
+            }
+            _ => at.material.emission,
+        };
         let d = ray.direction;
         let (mut n, turns) = cav_normal(scene, hit.primitive, &hit.geometric_normal);
         let mut outside = true;
@@ -97,7 +138,18 @@ pub fn radiance(scene: &RenderScene, mut ray: Ray, sampler: &mut Sampler) -> Col
             let along = (foot - ray.origin).normalize();
             (along * weights.tan - n).normalize()
         } else {
-            diffuse_direction(&n, sampler.next_2d())
+            let direction = diffuse_direction(&n, sampler.next_2d());
+            // cav's tangent is NaN where the normal is -x (its cross
+            // product with x vanishes): the path ends there, unlit.
+            if nee
+                && at.material.emission.is_black()
+                && (n.norm() - 1.0).abs() < 1e-9
+                && direction.iter().all(|c| c.is_finite())
+            {
+                result += past * light_sample(scene, &point, &n, ray.time, sampler);
+                sampled = Some(Sampled { point, normal: n });
+            }
+            direction
         };
         if past.is_black() || !direction.iter().all(|c| c.is_finite()) {
             break;
@@ -106,6 +158,59 @@ pub fn radiance(scene: &RenderScene, mut ray: Ray, sampler: &mut Sampler) -> Col
         t_min = T_MIN;
     }
     result
+}
+
+/// The solid-angle density with which a light sample from `from` gives
+/// the hit `hit` (at `point`) of cav's ray from there; 0 unless the hit is
+/// on a table entry and met from its outside.
+fn light_pdf(scene: &RenderScene, from: &Point3, time: f64, hit: &WorldHit, point: &Point3) -> f64 {
+    if hit.geometric_normal.dot(&(from - point)) <= 0.0 {
+        return 0.0;
+    }
+    let mut at = *hit;
+    at.point = *point;
+    scene.emitters().pdf(from, time, &at)
+}
+
+/// One light sample from the diffuse vertex at `point` (unit normal `n`
+/// on the ray's side), MIS-weighted against cav's cosine bounce; the
+/// shadow ray is cav's ray, and it counts only when its first hit is the
+/// sampled entry met from outside. The caller multiplies by the path's
+/// colour after the vertex.
+fn light_sample(
+    scene: &RenderScene,
+    point: &Point3,
+    n: &Vec3,
+    time: f64,
+    sampler: &mut Sampler,
+) -> Color {
+    if scene.emitters().is_empty() {
+        return Color::BLACK;
+    }
+    let select = emitter_choice(scene, sampler);
+    let u = sampler.next_2d();
+    let Some(light) = scene.emitters().sample(point, time, select, u) else {
+        return Color::BLACK;
+    };
+    let cos = n.dot(&light.direction);
+    if cos <= 0.0 || light.pdf <= 0.0 {
+        return Color::BLACK;
+    }
+    let ray = Ray::new(*point, light.direction, time);
+    let Some(hit) = scene.world().intersect(&ray, T_MIN, f64::INFINITY) else {
+        return Color::BLACK;
+    };
+    if scene.emitters().entry_of(&hit).map(|(entry, _)| entry) != Some(light.entry) {
+        return Color::BLACK;
+    }
+    let at_hit = ray.at(hit.t);
+    let density = light_pdf(scene, point, time, &hit, &at_hit);
+    if density <= 0.0 {
+        return Color::BLACK;
+    }
+    let emission = scene.shade(&hit, &ray).material.emission;
+    let bsdf = cos / PI;
+    emission * (bsdf * power_heuristic(density, bsdf) / light.pdf)
 }
 
 /// The normal cav's tracer receives for a hit of primitive `primitive`
