@@ -13,10 +13,11 @@ mod phase;
 #[cfg(test)]
 mod tests;
 
-pub use mist::{Mist, cambrian_mean_cosine};
+pub use mist::{CambrianLobe, Mist, cambrian_mean_cosine};
 pub use phase::HenyeyGreenstein;
 
 use crate::color::Color;
+use crate::math::Vec3;
 
 /// A homogeneous medium, in units of inverse scene length.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -24,6 +25,9 @@ pub struct Medium {
     pub sigma_a: Color,
     pub sigma_s: Color,
     pub phase: HenyeyGreenstein,
+    /// Cambrian's mist lobe instead of `phase`, when the medium is its
+    /// mist (see [`CambrianLobe`]).
+    pub cambrian_lobe: Option<CambrianLobe>,
 }
 
 /// What a free flight through a medium found before `t_max`.
@@ -57,6 +61,26 @@ impl Medium {
     #[inline]
     pub fn scatters(&self) -> bool {
         !self.sigma_s.is_black()
+    }
+
+    /// Value and density (the same number) of scattering a path that
+    /// travels along `travel` into `wi` (both unit).
+    #[inline]
+    pub fn phase_eval(&self, travel: &Vec3, wi: &Vec3) -> f64 {
+        match &self.cambrian_lobe {
+            Some(lobe) => lobe.density(travel, wi),
+            None => self.phase.eval(travel, wi),
+        }
+    }
+
+    /// A direction for a path travelling along `travel` (unit), drawn in
+    /// proportion to [`Medium::phase_eval`] from `u` (and, for Cambrian's
+    /// lobe, one more number from `third`).
+    pub fn phase_sample(&self, travel: &Vec3, u: [f64; 2], third: impl FnOnce() -> f64) -> Vec3 {
+        match &self.cambrian_lobe {
+            Some(lobe) => lobe.sample(travel, [u[0], u[1], third()]),
+            None => self.phase.sample(travel, u),
+        }
     }
 
     /// A free flight from a point along a ray whose next surface is at

@@ -10,6 +10,7 @@ fn chromatic() -> Medium {
         sigma_a: Color::new(0.1, 0.0, 0.4),
         sigma_s: Color::new(0.4, 1.0, 1.6),
         phase: HenyeyGreenstein { g: 0.0 },
+        cambrian_lobe: None,
     }
 }
 
@@ -85,6 +86,7 @@ fn grey_free_flights_collide_with_probability_one_minus_transmittance() {
         sigma_a: Color::gray(0.25),
         sigma_s: Color::gray(0.75),
         phase: HenyeyGreenstein { g: 0.5 },
+        cambrian_lobe: None,
     };
     let n = 100_000;
     let (_, scatter, scattered) = flight_means(&medium, 1.5, n);
@@ -103,6 +105,7 @@ fn a_pure_absorber_is_crossed_with_its_transmittance() {
         sigma_a: Color::new(1.0, 2.0, 3.0),
         sigma_s: Color::BLACK,
         phase: HenyeyGreenstein { g: 0.0 },
+        cambrian_lobe: None,
     };
     for u in [0.0, 0.5, 0.999] {
         assert_eq!(
