@@ -37,7 +37,7 @@ impl Mist {
             phase: HenyeyGreenstein {
                 g: cambrian_mean_cosine(self.bias).clamp(-0.99, 0.99),
             },
-            cambrian_lobe: Some(CambrianLobe { bias: self.bias }),
+            cambrian_mist: Some(CambrianLobe { bias: self.bias }),
         }
     }
 }
@@ -140,7 +140,7 @@ mod tests {
     }
 
     #[test]
-    fn cambrian_lobe_density_integrates_to_one_and_matches_its_samples() {
+    fn cambrian_mist_density_integrates_to_one_and_matches_its_samples() {
         let travel = Vec3::new(0.3, -0.8, 0.52).normalize();
         for bias in [0.0, 0.2, 0.9] {
             let lobe = CambrianLobe { bias };
@@ -169,7 +169,7 @@ mod tests {
     }
 
     #[test]
-    fn cambrian_lobe_drifts_upwards_for_a_path_going_down() {
+    fn cambrian_mist_drifts_upwards_for_a_path_going_down() {
         // A path travelling straight down still scatters upwards on
         // average, as Cambrian's mist does; a phase function would send it
         // on downwards with a forward g, or back up as much as sideways.
