@@ -139,6 +139,17 @@ impl CavRevolution {
         Some(surface)
     }
 
+    /// The triangles of `profile`'s tessellation (2 x 40 x (samples - 1)),
+    /// known before it is built.
+    pub fn triangle_count(profile: &Profile) -> usize {
+        let n = profile.controls.len();
+        let samples = match profile.kind {
+            CurveKind::Bezier => n.saturating_sub(1),
+            CurveKind::Bspline => n.saturating_sub(3),
+        } * SAMPLES_PER_SPAN;
+        2 * ANGLES * samples.saturating_sub(1)
+    }
+
     /// The tessellation's bounds (the steps move a hit a little off them).
     pub fn bounds(&self) -> Option<Aabb> {
         self.tessellation.bounds()
@@ -393,6 +404,19 @@ mod tests {
         let data = &spline.tessellation.data;
         assert_eq!(data.positions.len(), 100 * ANGLES);
         assert_eq!(data.triangles.len(), 2 * 99 * ANGLES);
+        let count = |surface: &CavRevolution| surface.tessellation.data.triangles.len();
+        let profile = |kind, n: i32| Profile {
+            kind,
+            controls: (0..n).map(|i| [1.0, f64::from(i)]).collect(),
+        };
+        assert_eq!(
+            CavRevolution::triangle_count(&profile(CurveKind::Bspline, 8)),
+            count(&spline)
+        );
+        assert_eq!(
+            CavRevolution::triangle_count(&profile(CurveKind::Bezier, 4)),
+            count(&cylinder())
+        );
         let top = data.positions.iter().fold(f64::MIN, |m, p| m.max(p.y));
         // The curve ends at y = 6 (the mean of the last controls 5, 6, 7).
         assert!(top < 6.0 - 1e-3 && top > 6.0 - 0.1, "{top}");

@@ -62,6 +62,13 @@ pub const MAX_WARNINGS_PER_KIND: usize = 5;
 /// Most control points of one Bezier or B-spline curve.
 pub const MAX_CONTROL_POINTS: usize = 4_096;
 
+/// Most triangles of the `cav` look's tessellations of surfaces of
+/// revolution in one scene (its rule: 1,600 a control point, about 190
+/// bytes each with their BVH, so 8 million take 1.5 GB; one curve of
+/// [`MAX_CONTROL_POINTS`] fits). Surfaces beyond it are built exact, with a
+/// warning.
+pub const MAX_CAV_TESSELLATION_TRIANGLES: usize = 8_000_000;
+
 /// Distinct field and block names of a scene file kept for look detection
 /// (`scene::build::distinct_words`); real files use fewer than 100.
 pub const MAX_KEPT_WORDS: usize = 1_024;

@@ -154,6 +154,15 @@ impl RenderScene {
         let look = settings.look;
         adapt(&mut scene, &look);
         let world = World::build(&scene, look.shape_rules());
+        if world.cav_revolutions_exact() > 0 {
+            warnings.push(Notice::Warning(format!(
+                "the {} look's tessellations of surfaces of revolution would pass {} \
+                 triangles: {} of them rendered exact instead",
+                look.name,
+                crate::limits::MAX_CAV_TESSELLATION_TRIANGLES,
+                world.cav_revolutions_exact()
+            )));
+        }
         let camera = Camera::new(
             &look.camera(&scene.camera),
             settings.width.max(1),

@@ -34,6 +34,12 @@ pub(super) struct Builder {
     meshes: HashMap<*const MeshData, Arc<Mesh>>,
     /// The mesh data that some instance shades `smooth`.
     smooth: HashSet<*const MeshData>,
+    /// Triangles of the cav tessellations built so far, and the most there
+    /// may be ([`crate::limits::MAX_CAV_TESSELLATION_TRIANGLES`]).
+    cav_triangles: usize,
+    pub(super) cav_budget: usize,
+    /// The surfaces built exact because their tessellation would pass it.
+    pub(super) cav_exact_instead: usize,
 }
 
 impl Builder {
@@ -41,7 +47,10 @@ impl Builder {
     /// instance shades smooth, so that their vertex normals are computed
     /// once, for all instances.
     pub(super) fn for_tree(root: &Object) -> Builder {
-        let mut builder = Builder::default();
+        let mut builder = Builder {
+            cav_budget: crate::limits::MAX_CAV_TESSELLATION_TRIANGLES,
+            ..Builder::default()
+        };
         root.for_each_leaf(&mut |leaf| {
             if let Object::Mesh {
                 mesh, smooth: true, ..
@@ -169,7 +178,14 @@ impl Builder {
                     SeededRevolution::new(profile).map(|r| Shape::SeededRevolution(Arc::new(r)))
                 }
                 RevolutionTest::CavMesh => {
-                    CavRevolution::new(profile).map(|r| Shape::CavRevolution(Arc::new(r)))
+                    let triangles = CavRevolution::triangle_count(profile);
+                    if self.cav_triangles.saturating_add(triangles) <= self.cav_budget {
+                        self.cav_triangles += triangles;
+                        CavRevolution::new(profile).map(|r| Shape::CavRevolution(Arc::new(r)))
+                    } else {
+                        self.cav_exact_instead += 1;
+                        Revolution::new(profile).map(|r| Shape::Revolution(Arc::new(r)))
+                    }
                 }
                 test => Revolution::new(profile).map(|mut revolution| {
                     revolution.test = test;

@@ -180,6 +180,9 @@ pub struct World {
     /// surface derivatives.
     /// Empty: compute them always.
     needs_uv: Vec<bool>,
+    /// Surfaces of revolution built exact where the look asked for cav's
+    /// tessellation, past [`crate::limits::MAX_CAV_TESSELLATION_TRIANGLES`].
+    cav_revolutions_exact: usize,
 }
 
 impl World {
@@ -195,7 +198,9 @@ impl World {
         let mut builder = Builder::for_tree(&scene.root);
         builder.rules = rules;
         builder.visit(&scene.root, None);
+        let cav_revolutions_exact = builder.cav_exact_instead;
         let mut world = World::from_primitives(builder.primitives);
+        world.cav_revolutions_exact = cav_revolutions_exact;
         world.needs_uv = scene
             .materials
             .iter()
@@ -249,7 +254,14 @@ impl World {
             bvh,
             bounds,
             needs_uv: Vec::new(),
+            cav_revolutions_exact: 0,
         }
+    }
+
+    /// How many surfaces of revolution are exact where the look asked for
+    /// cav's tessellation (see [`crate::limits::MAX_CAV_TESSELLATION_TRIANGLES`]).
+    pub fn cav_revolutions_exact(&self) -> usize {
+        self.cav_revolutions_exact
     }
 
     pub fn primitives(&self) -> &[Primitive] {

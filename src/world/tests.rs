@@ -232,3 +232,34 @@ fn world_is_send_and_sync() {
     fn check<T: Send + Sync>() {}
     check::<World>();
 }
+
+#[test]
+fn cav_tessellations_past_their_budget_are_built_exact() {
+    use crate::geometry::{CavRevolution, CurveKind, Profile, RevolutionTest};
+    let profile = Profile {
+        kind: CurveKind::Bezier,
+        controls: vec![[1.0, 0.0], [2.0, 1.0], [1.0, 2.0], [1.5, 3.0]],
+    };
+    let triangles = CavRevolution::triangle_count(&profile);
+    let vase = |material| Object::Revolution {
+        profile: profile.clone(),
+        material,
+    };
+    let root = Object::Group(vec![vase(0), vase(1), vase(2)]);
+    let mut builder = builder::Builder::for_tree(&root);
+    builder.rules = ShapeRules {
+        revolution_test: RevolutionTest::CavMesh,
+        ..ShapeRules::default()
+    };
+    // Room for two tessellations, not three.
+    builder.cav_budget = 3 * triangles - 1;
+    builder.visit(&root, None);
+    let kinds: Vec<bool> = builder
+        .primitives
+        .iter()
+        .map(|p| matches!(p.shape, Shape::CavRevolution(_)))
+        .collect();
+    assert_eq!(kinds, [true, true, false]);
+    assert!(matches!(builder.primitives[2].shape, Shape::Revolution(_)));
+    assert_eq!(builder.cav_exact_instead, 1);
+}
