@@ -38,6 +38,76 @@ fn cav_glass_lets_a_leaving_ray_out_as_if_it_entered() {
     assert!(physical < 0.2, "by the side of the normal: {physical}");
 }
 
+/// `UNDER_GLASS` with the glass plane made of two triangles, their winding
+/// normal up (the plane's normal).
+const UNDER_GLASS_TRIANGLES: &str = "PerspectiveCamera { center 0 0 -1 direction 0 0 1 up 0 1 0 \
+     angle 150 width 4 height 4 focus 0 field 0 }\nBackground { color 0 0 0 }\n\
+     Materials { numMaterials 2\n\
+     Material { diffuseColor 1 1 1 refractiveIndex 1.5 Fresnel { fbase 0 fscale 1 power 100 } }\n\
+     Material { diffuseColor 0 0 0 luminance 1 1 1 } }\n\
+     Group { numObjects 3 MaterialIndex 0\n\
+     Triangle { vertex0 -100 -100 0 vertex1 100 -100 0 vertex2 100 100 0 }\n\
+     Triangle { vertex0 -100 -100 0 vertex1 100 100 0 vertex2 -100 100 0 }\n\
+     MaterialIndex 1 Plane { normal 0 0 -1 offset -10 } }";
+
+#[test]
+fn cav_triangles_keep_their_winding_normal() {
+    // cav's triangles do not turn their normal towards the ray (its
+    // planes do): under the same glass made of triangles the camera is
+    // inside it, and the rays beyond the critical angle are reflected
+    // down into the dark.
+    let plane = mean(&render_text("under-glass", UNDER_GLASS, Look::CAV, 16));
+    let triangles = mean(&render_text(
+        "under-glass-triangles",
+        UNDER_GLASS_TRIANGLES,
+        Look::CAV,
+        16,
+    ));
+    assert!(
+        plane > 0.8 && triangles < 0.2,
+        "plane {plane}, triangles {triangles}"
+    );
+}
+
+/// The camera above a mirror of two triangles at z = 0 in a transform of
+/// uniform scale `scale` (vertices divided by it), and under the mirror
+/// an emitting floor.
+fn scaled_mirror(scale: f64) -> String {
+    let v = 20.0 / scale;
+    format!(
+        "PerspectiveCamera {{ center 0 0 5 direction 0 0 -1 up 0 1 0 angle 30 \
+         width 4 height 4 focus 0 field 0 }}\nBackground {{ color 0 0 0 }}\n\
+         Materials {{ numMaterials 2\n\
+         Material {{ diffuseColor 1 1 1 Fresnel {{ fbase 1 fscale 0 power 1 }} }}\n\
+         Material {{ diffuseColor 0 0 0 luminance 1 1 1 }} }}\n\
+         Group {{ numObjects 2 MaterialIndex 0\n\
+         Transform {{ UniformScale {scale} Group {{ numObjects 2\n\
+         Triangle {{ vertex0 -{v} -{v} 0 vertex1 {v} -{v} 0 vertex2 {v} {v} 0 }}\n\
+         Triangle {{ vertex0 -{v} -{v} 0 vertex1 {v} {v} 0 vertex2 -{v} {v} 0 }} }} }}\n\
+         MaterialIndex 1 Plane {{ normal 0 0 1 offset -5 }} }}"
+    )
+}
+
+#[test]
+fn cav_mirrors_with_a_transformed_normal_shorter_than_a_unit() {
+    // cav's transforms give a shape the inverse transpose times its unit
+    // normal, not normalised: scaled by 3 its length is 1/3, and cav's
+    // mirror direction d - 2 n (d.n) keeps 1 - 2/9 of the ray's normal
+    // part: the ray goes on through the mirror to the emitting floor.
+    // Unscaled, the mirror sends it up into the dark.
+    let scaled = mean(&render_text(
+        "scaled-mirror",
+        &scaled_mirror(3.0),
+        Look::CAV,
+        4,
+    ));
+    let unscaled = mean(&render_text("mirror", &scaled_mirror(1.0), Look::CAV, 4));
+    assert!(
+        scaled > 0.99 && unscaled < 0.01,
+        "scaled {scaled}, unscaled {unscaled}"
+    );
+}
+
 /// Rays from the floor that meet the cap of cav's light (a radius-600
 /// sphere whose cap hangs 5e-3 under the ceiling at z = 5), each followed
 /// by one diffuse ray leaving its hit point downwards: how many of those

@@ -105,6 +105,16 @@ impl LobeSet {
         }
     }
 
+    /// cav's angle-dependent weights, if the material has them.
+    pub fn angular(&self) -> Option<AngularWeights> {
+        self.angular
+    }
+
+    /// The index of refraction inside its dielectrics.
+    pub fn ior(&self) -> f64 {
+        self.ior
+    }
+
     pub fn len(&self) -> usize {
         self.lobes.len()
     }

@@ -61,7 +61,11 @@ fn distance(a: V, b: V) -> f32 {
 
 /// The hit of `ray` (its origin a camera or a surface point) with the
 /// sphere (`center`, `radius`) in `(t_min, t_max)` by cav's test, the ray
-/// starting `LEAVING_OFFSET` along its direction as cav's do.
+/// starting `LEAVING_OFFSET` along its direction as cav's do. As in cav's
+/// code, `t` is a distance along the normalised direction whatever the
+/// length of `ray.direction`: for a direction shorter than a unit, the
+/// point `ray.at(t)` falls short of the sphere, and `t` compares with
+/// other shapes' (in units of the direction) as cav's group compares them.
 #[inline]
 pub fn intersect(
     center: &Point3,
@@ -106,7 +110,7 @@ pub fn intersect(
     if t.is_nan() || t < MIN_DISTANCE {
         return None;
     }
-    let t = (f64::from(t) + LEAVING_OFFSET) / length;
+    let t = f64::from(t) + LEAVING_OFFSET;
     (t > t_min && t < t_max).then_some(CavHit { t, inside })
 }
 
@@ -117,13 +121,26 @@ mod tests {
     #[test]
     fn hits_from_outside_the_near_root_and_from_inside_the_far_one() {
         let center = Point3::new(0.5, -1.0, 2.0);
-        let outside = Ray::new(Point3::new(0.5, -1.0, -8.0), Vec3::z() * 2.0, 0.0);
+        let outside = Ray::new(Point3::new(0.5, -1.0, -8.0), Vec3::z(), 0.0);
         let hit = intersect(&center, 2.0, &outside, 0.0, f64::INFINITY).expect("hit");
-        assert!((hit.t - 4.0).abs() < 1e-5 && !hit.inside, "{hit:?}");
+        assert!((hit.t - 8.0).abs() < 1e-5 && !hit.inside, "{hit:?}");
         let from_centre = Ray::new(center, Vec3::new(0.0, 0.6, 0.8), 0.0);
         let hit = intersect(&center, 2.0, &from_centre, 0.0, f64::INFINITY).expect("hit");
         assert!((hit.t - 2.0).abs() < 1e-5 && hit.inside, "{hit:?}");
         let away = Ray::new(Point3::new(0.5, -1.0, -8.0), -Vec3::z(), 0.0);
         assert_eq!(intersect(&center, 2.0, &away, 0.0, f64::INFINITY), None);
+    }
+
+    #[test]
+    fn measures_along_the_normalised_direction_whatever_its_length() {
+        // cav's t is a distance: a direction of length 0.5 meets the
+        // sphere 8 away at t = 8 (not 16), whose point falls halfway; and
+        // the range applies to that distance.
+        let center = Point3::new(0.5, -1.0, 2.0);
+        let short = Ray::new(Point3::new(0.5, -1.0, -8.0), Vec3::z() * 0.5, 0.0);
+        let hit = intersect(&center, 2.0, &short, 0.0, f64::INFINITY).expect("hit");
+        assert!((hit.t - 8.0).abs() < 1e-5, "{hit:?}");
+        assert!((short.at(hit.t).z - -4.0).abs() < 1e-5);
+        assert_eq!(intersect(&center, 2.0, &short, 0.0, 7.0), None);
     }
 }

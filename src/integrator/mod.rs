@@ -2,6 +2,7 @@
 //! [`RenderScene`].
 
 pub mod caustics;
+pub mod cav;
 pub mod original;
 pub mod path;
 pub mod path_log;
@@ -55,6 +56,7 @@ impl Integrator {
             Integrator::Path => return path::radiance(scene, ray, sample, sampler, splats, log),
             Integrator::RayCast => raycast::radiance(scene, ray),
             Integrator::Rub => rub::radiance(scene, ray, sampler),
+            Integrator::Cav => cav::radiance(scene, ray, sampler),
             Integrator::Whitted => whitted::radiance_shadowed(scene, ray, scene.max_depth()),
             Integrator::WhittedUnshadowed => {
                 whitted::radiance_unshadowed(scene, ray, scene.max_depth())

@@ -28,6 +28,11 @@ pub enum Integrator {
     /// Schlick's weight times `specularColor` and the refracted ray by the
     /// rest, at index 1 (emily-jia's; see `integrator::whitted`).
     WhittedUnshadowed,
+    /// CaveSpiderLZJ's path tracer (the `cav` look), with its hit normals
+    /// as its code leaves them: a triangle's winding normal, a transformed
+    /// shape's normal not normalised, mirror rays not normalised (see
+    /// `integrator::cav`).
+    Cav,
     /// 1rubbishyuan's recursive estimator with its ad-hoc factors (direct
     /// light x1500, the diffuse bounce x1000, both over the depth, clamps
     /// per term, death with probability 0.2 at every call, never
@@ -39,7 +44,7 @@ pub enum Integrator {
 }
 
 impl Integrator {
-    pub const ALL: [Integrator; 7] = [
+    pub const ALL: [Integrator; 8] = [
         Integrator::Path,
         Integrator::Original,
         Integrator::RayCast,
@@ -47,6 +52,7 @@ impl Integrator {
         Integrator::Whitted,
         Integrator::WhittedUnshadowed,
         Integrator::Rub,
+        Integrator::Cav,
     ];
 
     /// Whether it draws no random numbers: one camera ray through a fixed
@@ -67,6 +73,7 @@ impl Integrator {
             Integrator::Whitted => "whitted",
             Integrator::WhittedUnshadowed => "whitted-unshadowed",
             Integrator::Rub => "rub",
+            Integrator::Cav => "cav",
             Integrator::Sppm => "sppm",
         }
     }

@@ -125,9 +125,9 @@ impl Look {
     pub const CAV: Look = Look {
         name: "cav",
         renderer: "CaveSpiderLZJ/PathTracingFinal",
-        // Its tracer samples the lobes alone (no light samples): its
-        // images have that noise, and its glass is not reciprocal.
-        integrator: Integrator::Original,
+        // Its tracer samples the lobes alone (no light samples), with its
+        // hit normals as its code leaves them (`integrator::cav`).
+        integrator: Integrator::Cav,
         // Its paths stop at the 9th hit, which adds its emission.
         max_depth: 8,
         miss: Miss::Weighted,
@@ -137,8 +137,9 @@ impl Look {
         pixels: PixelSampling::AboutCorner,
         texture_rows: TextureRows::Down,
         // Its spheres give the inward normal to a ray that starts inside,
-        // its triangles and planes flip theirs towards the ray
-        // (`CaveSpiderLZJ/PathTracingFinal:include/sphere.hpp`, `triangle.hpp`).
+        // its planes flip theirs towards the ray; its triangles keep their
+        // winding normal (`CaveSpiderLZJ/PathTracingFinal:include/sphere.hpp`,
+        // `plane.hpp`, `triangle.hpp` at `d730b9c`; `integrator::cav`).
         every_hit_enters: true,
         sphere_test: SphereTest::Cav,
         // Its surfaces of revolution are meshes of the profile

@@ -55,13 +55,29 @@ impl Primitive {
         )
     }
 
+    /// The hit of `ray` with `t_min < t < t_max`. A sphere under cav's test
+    /// measures its `t` along the normalised direction (see
+    /// [`cav_sphere::intersect`](crate::geometry::cav_sphere::intersect)); a
+    /// transformed one is brought back to the ray's own units, as cav's
+    /// transforms do.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Intersection> {
         match &self.transform {
             None => self.shape.intersect(ray, t_min, t_max),
-            Some(transform) => self
-                .shape
-                .intersect(&transform.ray_to_object(ray), t_min, t_max),
+            Some(transform) => match &self.shape {
+                Shape::Sphere(sphere) if sphere.test == SphereTest::Cav => {
+                    let local = transform.ray_to_object(ray);
+                    let length = local.direction.norm();
+                    let mut hit = self
+                        .shape
+                        .intersect(&local, t_min * length, t_max * length)?;
+                    hit.t /= length;
+                    Some(hit)
+                }
+                _ => self
+                    .shape
+                    .intersect(&transform.ray_to_object(ray), t_min, t_max),
+            },
         }
     }
 
