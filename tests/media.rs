@@ -48,6 +48,7 @@ fn white_medium(scale: f64) -> Medium {
         sigma_a: Color::BLACK,
         sigma_s: Color::new(0.5, 1.0, 2.0) * scale,
         phase: HenyeyGreenstein { g: 0.3 },
+        cambrian_mist: None,
     }
 }
 
@@ -130,6 +131,7 @@ fn a_grey_scattering_ball_in_a_white_furnace_returns_the_background_exactly() {
         sigma_a: Color::BLACK,
         sigma_s: Color::gray(1.5),
         phase: HenyeyGreenstein { g: -0.4 },
+        cambrian_mist: None,
     };
     let interface = Material {
         interface: true,
@@ -200,6 +202,7 @@ fn absorber_scene() -> Scene {
             sigma_a: Color::new(0.25, 0.5, 1.0),
             sigma_s: Color::BLACK,
             phase: HenyeyGreenstein { g: 0.0 },
+            cambrian_mist: None,
         }),
         ..Material::default()
     };

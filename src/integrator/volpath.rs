@@ -75,10 +75,11 @@ pub fn radiance(scene: &RenderScene, mut ray: Ray, sampler: &mut Sampler) -> Col
                     if !scene.direct_lights().is_empty() {
                         result += throughput * medium_pa1_lights(scene, inside, &point, &travel);
                     }
-                    let wi = inside.phase.sample(&travel, sampler.next_2d());
+                    let u = sampler.next_2d();
+                    let wi = inside.phase_sample(&travel, u, || sampler.next_f64());
                     origin = Some(Origin {
                         point,
-                        pdf: inside.phase.eval(&travel, &wi),
+                        pdf: inside.phase_eval(&travel, &wi),
                     });
                     if !roulette(&mut throughput, depth, sampler) {
                         break;
@@ -225,7 +226,7 @@ fn medium_light_sample(
     let Some(light) = sample_light(scene, point, time, sampler) else {
         return Color::BLACK;
     };
-    let phase = medium.phase.eval(travel, &light.direction);
+    let phase = medium.phase_eval(travel, &light.direction);
     let seen = scene.transmittance(
         *point,
         light.direction,
@@ -284,7 +285,7 @@ fn medium_pa1_lights(scene: &RenderScene, medium: &Medium, point: &Point3, trave
         let Some(way) = point_lights::toward(light, point) else {
             continue;
         };
-        let phase = medium.phase.eval(travel, &way.to_light);
+        let phase = medium.phase_eval(travel, &way.to_light);
         let seen = scene.transmittance(
             *point,
             way.to_light,

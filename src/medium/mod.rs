@@ -13,10 +13,11 @@ mod phase;
 #[cfg(test)]
 mod tests;
 
-pub use mist::{Mist, cambrian_mean_cosine};
+pub use mist::{CambrianLobe, Mist, cambrian_mean_cosine};
 pub use phase::HenyeyGreenstein;
 
 use crate::color::Color;
+use crate::math::Vec3;
 
 /// A homogeneous medium, in units of inverse scene length.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -24,6 +25,10 @@ pub struct Medium {
     pub sigma_a: Color,
     pub sigma_s: Color,
     pub phase: HenyeyGreenstein,
+    /// When the medium is Cambrian's mist: its lobe instead of `phase`
+    /// (see [`CambrianLobe`]), and its absorption over the whole segment
+    /// a path scatters in (see [`Medium::sample_flight`]).
+    pub cambrian_mist: Option<CambrianLobe>,
 }
 
 /// What a free flight through a medium found before `t_max`.
@@ -59,8 +64,35 @@ impl Medium {
         !self.sigma_s.is_black()
     }
 
+    /// Value and density (the same number) of scattering a path that
+    /// travels along `travel` into `wi` (both unit).
+    #[inline]
+    pub fn phase_eval(&self, travel: &Vec3, wi: &Vec3) -> f64 {
+        match &self.cambrian_mist {
+            Some(lobe) => lobe.density(travel, wi),
+            None => self.phase.eval(travel, wi),
+        }
+    }
+
+    /// A direction for a path travelling along `travel` (unit), drawn in
+    /// proportion to [`Medium::phase_eval`] from `u` (and, for Cambrian's
+    /// lobe, one more number from `third`).
+    pub fn phase_sample(&self, travel: &Vec3, u: [f64; 2], third: impl FnOnce() -> f64) -> Vec3 {
+        match &self.cambrian_mist {
+            Some(lobe) => lobe.sample(travel, [u[0], u[1], third()]),
+            None => self.phase.sample(travel, u),
+        }
+    }
+
     /// A free flight from a point along a ray whose next surface is at
     /// `t_max` (infinite when there is none), from one uniform number `u`.
+    /// Cambrian's mist scatters a path at `x` with the density
+    /// `sigma_s e^(-sigma_s x)` times its survival over the whole segment,
+    /// `e^(-sigma_a t_max)` (`src/main.cpp`: the kill is drawn over the
+    /// segment before the scattering point), where a medium's survival runs
+    /// to the point only: its scattering weight takes the rest,
+    /// `e^(-sigma_a (t_max - x))`. Crossing the segment is the same for
+    /// both.
     pub fn sample_flight(&self, t_max: f64, u: f64) -> Flight {
         if !self.scatters() {
             return Flight::Pass {
@@ -86,10 +118,16 @@ impl Medium {
                     weight: Color::BLACK,
                 };
             }
-            Flight::Scatter {
-                distance,
-                weight: self.sigma_s * transmittance / pdf,
+            let mut weight = self.sigma_s * transmittance / pdf;
+            if self.cambrian_mist.is_some() {
+                // Cambrian kills a path with the chance of absorption over
+                // the whole segment to the next surface (none: black), and
+                // only then lets it scatter on the way.
+                weight *= self
+                    .sigma_a
+                    .map(|sigma| channel_transmittance(sigma, t_max - distance));
             }
+            Flight::Scatter { distance, weight }
         } else {
             let transmittance = self.transmittance(t_max);
             let pdf = transmittance.average();

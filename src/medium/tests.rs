@@ -10,6 +10,7 @@ fn chromatic() -> Medium {
         sigma_a: Color::new(0.1, 0.0, 0.4),
         sigma_s: Color::new(0.4, 1.0, 1.6),
         phase: HenyeyGreenstein { g: 0.0 },
+        cambrian_mist: None,
     }
 }
 
@@ -85,6 +86,7 @@ fn grey_free_flights_collide_with_probability_one_minus_transmittance() {
         sigma_a: Color::gray(0.25),
         sigma_s: Color::gray(0.75),
         phase: HenyeyGreenstein { g: 0.5 },
+        cambrian_mist: None,
     };
     let n = 100_000;
     let (_, scatter, scattered) = flight_means(&medium, 1.5, n);
@@ -103,6 +105,7 @@ fn a_pure_absorber_is_crossed_with_its_transmittance() {
         sigma_a: Color::new(1.0, 2.0, 3.0),
         sigma_s: Color::BLACK,
         phase: HenyeyGreenstein { g: 0.0 },
+        cambrian_mist: None,
     };
     for u in [0.0, 0.5, 0.999] {
         assert_eq!(
@@ -169,4 +172,33 @@ fn henyey_greenstein_samples_follow_its_density() {
             );
         }
     }
+}
+
+#[test]
+fn cambrian_mist_absorbs_over_the_whole_segment_before_scattering() {
+    // Cambrian: a path scatters before a surface at 10 with the chance
+    // e^(-sigma_a 10) (1 - e^(-sigma_s 10)), and never without a surface.
+    let medium = Medium {
+        sigma_a: Color::gray(0.05),
+        sigma_s: Color::gray(0.1),
+        phase: HenyeyGreenstein { g: 0.0 },
+        cambrian_mist: Some(crate::medium::CambrianLobe { bias: 0.2 }),
+    };
+    let n = 20_000;
+    let scattered = |t_max: f64| {
+        (0..n)
+            .map(
+                |i| match medium.sample_flight(t_max, (i as f64 + 0.5) / n as f64) {
+                    // Their expected weight is the chance Cambrian scatters.
+                    Flight::Scatter { weight, .. } => weight.g,
+                    Flight::Pass { .. } => 0.0,
+                },
+            )
+            .sum::<f64>()
+            / n as f64
+    };
+    let want = (-0.5f64).exp() * (1.0 - (-1.0f64).exp());
+    let got = scattered(10.0);
+    assert!((got - want).abs() < 0.01 * want, "{got} {want}");
+    assert_eq!(scattered(f64::INFINITY), 0.0);
 }

@@ -102,12 +102,7 @@ pub fn build_camera(
                     "the shutter is open over the whole motion of moving spheres",
                 )?;
             }
-            "mist" => {
-                mist = Some((
-                    read_mist(context, &mut cursor, item.location)?,
-                    item.location,
-                ))
-            }
+            "mist" => mist = Some((read_mist(context, &mut cursor)?, item.location)),
             "dispersion" => {
                 if !cursor.take_numbers().is_empty() {
                     context.not_rendered(
@@ -223,13 +218,8 @@ pub fn build_camera(
 }
 
 /// `mist e s b`: two survival rates per unit length in (0, 1] and the
-/// direction bias, which is not reproduced (scattering follows a
-/// Henyey-Greenstein lobe of the same mean cosine, see [`Mist`]).
-fn read_mist(
-    context: &mut Context,
-    cursor: &mut Cursor,
-    location: Location,
-) -> Result<Mist, SceneError> {
+/// direction bias (rendered as Cambrian renders them, see [`Mist`]).
+fn read_mist(context: &mut Context, cursor: &mut Cursor) -> Result<Mist, SceneError> {
     let mut numbers = [0.0; 3];
     for (slot, what) in numbers.iter_mut().zip(["survival", "scatter survival"]) {
         let at = cursor.here();
@@ -242,12 +232,6 @@ fn read_mist(
         }
     }
     numbers[2] = cursor.number(context, "mist")?;
-    context.warn(
-        location,
-        "'mist' is rendered as a physical medium: its upward scattering bias is \
-         approximated by a Henyey-Greenstein lobe of the same mean cosine"
-            .into(),
-    )?;
     Ok(Mist {
         survival: numbers[0],
         scatter_survival: numbers[1],
@@ -321,7 +305,6 @@ mod tests {
         let medium = scene.medium.expect("mist medium");
         assert!((medium.sigma_a.r + 0.998f64.ln()).abs() < 1e-15);
         assert!((medium.sigma_s.b + 0.9985f64.ln()).abs() < 1e-15);
-        assert!(scene.warnings[0].message.contains("Henyey-Greenstein"));
         let e = camera("PerspectiveCamera { width 2 height 2 mist 1.5 0.9 0 }").expect_err("rate");
         assert!(e.contains("t.txt:1:43") && e.contains("(0, 1]"), "{e}");
         let text = "Medium { sigmaS 1 1 1 }\nPerspectiveCamera { width 2 height 2 mist 0.5 0.5 0 }";

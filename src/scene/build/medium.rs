@@ -15,6 +15,7 @@ pub fn build_medium(context: &mut Context, block: &Block) -> Result<Medium, Scen
         sigma_a: Color::BLACK,
         sigma_s: Color::BLACK,
         phase: HenyeyGreenstein { g: 0.0 },
+        cambrian_mist: None,
     };
     let mut cursor = Cursor::of(block);
     while let Some(item) = cursor.next() {
